@@ -1,0 +1,43 @@
+# fixtrace: a Q16.16 ray tracer for microcontrollers without an FPU.
+#
+#   make            build the host renderer (build/posix/fixtrace)
+#   make run        render scenes/seed.scene to seed.ppm
+#   make test       build and run every test (tests/run.sh)
+#   make firmware BOARD=an385 [SCENE=... WIDTH=... HEIGHT=... SPP=...]
+#   make qemu     BOARD=an385 [same]     make size BOARD=an385
+#   make SANITIZE=1 test                 host tests under ASan + UBSan
+#
+# V=1 shows full command lines; `make print-VAR` prints a variable.
+# Build output goes under build/<target>/ only.
+
+.DEFAULT_GOAL := all
+.SUFFIXES:
+
+V ?= 0
+Q := $(if $(filter 1,$(V)),,@)
+
+ifeq ($(origin CC),default)
+CC := gcc
+endif
+
+# Warnings every build keeps clean. Core code is held to -Wconversion too.
+WARN := -Wall -Wextra -Werror -Wshadow -Wundef -Wdouble-promotion \
+        -Wstrict-prototypes -Wmissing-prototypes -fno-common
+CORE_WARN := $(WARN) -Wconversion -Wno-sign-conversion
+
+CORE_SRC := $(sort $(wildcard core/*.c))
+CORE_HDR := $(sort $(wildcard core/*.h))
+
+include mk/posix.mk
+include mk/test.mk
+-include mk/firmware.mk
+-include mk/tools.mk
+
+.PHONY: all clean print-%
+all: $(FIXTRACE)
+
+clean:
+	rm -rf build
+
+print-%:
+	@echo '$*=$($*)'

@@ -1,0 +1,90 @@
+/*
+ * fx_vec: 3-vectors of Q16.16 values. Small helpers return structs by value.
+ * Component-wise operations follow the fx_math policy of their scalar op.
+ */
+#ifndef FX_VEC_H
+#define FX_VEC_H
+
+#include "fx_math.h"
+
+typedef struct {
+    fx_t x, y, z;
+} fx_vec3;
+
+static inline fx_vec3 fx_v3(fx_t x, fx_t y, fx_t z)
+{
+    fx_vec3 v;
+    v.x = x;
+    v.y = y;
+    v.z = z;
+    return v;
+}
+
+/* a + b per component; exact, saturates. */
+static inline fx_vec3 fx_v3_add(fx_vec3 a, fx_vec3 b)
+{
+    return fx_v3(fx_add(a.x, b.x), fx_add(a.y, b.y), fx_add(a.z, b.z));
+}
+
+/* a - b per component; exact, saturates. */
+static inline fx_vec3 fx_v3_sub(fx_vec3 a, fx_vec3 b)
+{
+    return fx_v3(fx_sub(a.x, b.x), fx_sub(a.y, b.y), fx_sub(a.z, b.z));
+}
+
+/* -a per component; saturates only at FX_MIN. */
+static inline fx_vec3 fx_v3_neg(fx_vec3 a)
+{
+    return fx_v3(fx_neg(a.x), fx_neg(a.y), fx_neg(a.z));
+}
+
+/* a * s per component; each rounded to nearest as fx_mul, saturates. */
+static inline fx_vec3 fx_v3_scale(fx_vec3 a, fx_t s)
+{
+    return fx_v3(fx_mul(a.x, s), fx_mul(a.y, s), fx_mul(a.z, s));
+}
+
+/* a + b * s per component: one rounding per component, saturates. */
+static inline fx_vec3 fx_v3_madd(fx_vec3 a, fx_vec3 b, fx_t s)
+{
+    return fx_v3(fx_sat64((int64_t)a.x + (((int64_t)b.x * s + 0x8000) >> 16)),
+                 fx_sat64((int64_t)a.y + (((int64_t)b.y * s + 0x8000) >> 16)),
+                 fx_sat64((int64_t)a.z + (((int64_t)b.z * s + 0x8000) >> 16)));
+}
+
+/* Exact dot product as Q32.32, for operands where one side is bounded by
+ * |component| <= 2^20 (4.0 or less: directions, normals). No overflow then:
+ * each product is below 2^51. */
+static inline int64_t fx_v3_dot_q32(fx_vec3 a, fx_vec3 b)
+{
+    return (int64_t)a.x * b.x + (int64_t)a.y * b.y + (int64_t)a.z * b.z;
+}
+
+/* Dot product with a bounded operand (as fx_v3_dot_q32), rounded once to
+ * nearest (ties toward +infinity); saturates. */
+static inline fx_t fx_v3_dotn(fx_vec3 a, fx_vec3 b)
+{
+    return fx_from_q32(fx_v3_dot_q32(a, b));
+}
+
+/* Dot product of any two vectors: the three exact products are summed
+ * without overflow for every input, then rounded once to nearest (ties
+ * toward +infinity); saturates. */
+fx_t fx_v3_dot(fx_vec3 a, fx_vec3 b);
+
+/* Exact |a|^2 as unsigned Q32.32; never overflows (at most 3 * 2^62). */
+uint64_t fx_v3_len2_q32(fx_vec3 a);
+
+/* Cross product; each component rounded once to nearest, saturates. */
+fx_vec3 fx_v3_cross(fx_vec3 a, fx_vec3 b);
+
+/* Length, correctly rounded to nearest from the exact |a|^2; saturates to
+ * FX_MAX (only for lengths of 32768 or more). */
+fx_t fx_v3_length(fx_vec3 a);
+
+/* Unit vector along a. Exact squares in 64 bits keep it accurate for tiny
+ * and huge vectors alike: each component is within 1 ulp of the true value.
+ * The zero vector gives the zero vector. */
+fx_vec3 fx_v3_normalize(fx_vec3 a);
+
+#endif /* FX_VEC_H */

@@ -1,0 +1,66 @@
+/*
+ * fixtrace configuration: every build-time option and capacity limit, each
+ * with its default. Override any of them with -DNAME=value; nothing else in
+ * the tree defines these names.
+ */
+#ifndef RT_CONFIG_H
+#define RT_CONFIG_H
+
+/* ---- Capacities (they size the caller's rt_scene) ---------------------- */
+
+/* Objects in one scene. */
+#ifndef RT_MAX_OBJECTS
+#define RT_MAX_OBJECTS 128
+#endif
+
+/* Named materials in one scene. */
+#ifndef RT_MAX_MATERIALS
+#define RT_MAX_MATERIALS 32
+#endif
+
+/* Point lights in one scene. */
+#ifndef RT_MAX_LIGHTS
+#define RT_MAX_LIGHTS 4
+#endif
+
+/* Longest material name, in bytes, not counting the terminator. */
+#ifndef RT_MAX_NAME
+#define RT_MAX_NAME 23
+#endif
+
+/* Widest image the renderer accepts (the caller's row buffer holds one). */
+#ifndef RT_MAX_WIDTH
+#define RT_MAX_WIDTH 4096
+#endif
+
+/* Tallest image the renderer accepts. */
+#ifndef RT_MAX_HEIGHT
+#define RT_MAX_HEIGHT 4096
+#endif
+
+/* Compile-time cap on ray recursion (reflection + refraction bounces). The
+ * stack grows by one trace frame per level, so this bounds stack use. */
+#ifndef RT_MAX_DEPTH
+#define RT_MAX_DEPTH 5
+#endif
+
+/* Largest supersampling grid side: spp = n*n with n <= RT_MAX_SPP_SIDE. */
+#ifndef RT_MAX_SPP_SIDE
+#define RT_MAX_SPP_SIDE 4
+#endif
+
+/* ---- Behaviour ---------------------------------------------------------- */
+
+/* 1: count rays and intersection tests in rt_stats. 0: no counting code. */
+#ifndef RT_STATS
+#define RT_STATS 1
+#endif
+
+/* ---- Effect removal (default off; see docs/effects.md) ------------------
+ * Each flag removes the code for one effect. A scene that needs a removed
+ * effect is refused by rt_scene_check_build(), never rendered wrongly.
+ * RT_NO_REFLECTION, RT_NO_REFRACTION, RT_NO_TEXTURES, RT_NO_BUMP,
+ * RT_NO_SHADOWS, RT_NO_SPECULAR, RT_NO_SUPERSAMPLING, RT_NO_MULTILIGHT,
+ * RT_NO_SPHERE, RT_NO_QUAD, RT_NO_BOX, RT_NO_CYLINDER, RT_NO_CONE. */
+
+#endif /* RT_CONFIG_H */

@@ -1,0 +1,66 @@
+/*
+ * rt_render: the core's one boundary to a platform. The caller owns the
+ * scene, a row buffer of rt_row_bytes() bytes and a callback; the renderer
+ * fills one scanline at a time and hands it over. There is no frame buffer.
+ */
+#ifndef RT_RENDER_H
+#define RT_RENDER_H
+
+#include <stddef.h>
+#include "rt_scene.h"
+
+/* Pixel layout of the rows handed to the callback. */
+typedef enum {
+    RT_RGB888 = 0,  /* 3 bytes per pixel: R, G, B */
+    RT_RGB565_LE,   /* 2 bytes per pixel, little-endian 5:6:5 */
+    RT_RGB565_BE    /* 2 bytes per pixel, big-endian (byte-swapped) 5:6:5 */
+} rt_format;
+
+typedef struct {
+    uint16_t width, height; /* 1..RT_MAX_WIDTH, 1..RT_MAX_HEIGHT */
+    uint8_t spp;            /* 1, 4, 9 or 16 (n*n grid) */
+    uint8_t depth;          /* recursion depth, 0..RT_MAX_DEPTH */
+    uint8_t format;         /* rt_format */
+    uint8_t dither;         /* RGB565 only: 1 = ordered 4x4 dither */
+} rt_options;
+
+/* Ray and test counters. Each field counts events; all zero at start. */
+typedef struct {
+    uint64_t primary;    /* camera rays */
+    uint64_t shadow;     /* shadow rays */
+    uint64_t reflection; /* reflection rays, including total internal */
+    uint64_t refraction; /* transmitted rays */
+    uint64_t tests;      /* ray-object intersection tests */
+} rt_stats;
+
+/* Receives finished row y. `row` holds rt_row_bytes() bytes and belongs to
+ * the caller that passed it to rt_render_rows(); it is valid only until the
+ * callback returns. Return 0 to go on, non-zero to stop the render. */
+typedef int (*rt_row_fn)(void *ctx, int y, const uint8_t *row, size_t nbytes);
+
+/* Fills *o from the scene's defaults (size, spp, depth), RGB888. */
+void rt_options_from_scene(rt_options *o, const rt_scene *s);
+
+/* Bytes in one row for these options (width * 3 or width * 2). */
+size_t rt_row_bytes(const rt_options *o);
+
+/* Renders rows y0 <= y < y1 (top row is 0) into row_buf, calling fn after
+ * each. Rows are independent: any split into bands gives the same bytes.
+ * stats may be NULL. Returns RT_OK, RT_ERR_ARG for bad options or rows,
+ * RT_ERR_UNSUPPORTED when the scene needs an effect this build removed, or
+ * RT_ERR_ABORTED when fn returned non-zero. */
+rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
+                         int y1, uint8_t *row_buf, rt_row_fn fn, void *ctx,
+                         rt_stats *stats);
+
+/* Effects the scene needs, as RT_FEAT_* bits (also stored by the parser in
+ * s->features). spp > 1 adds RT_FEAT_SUPERSAMPLING. */
+uint32_t rt_scene_features(const rt_scene *s, uint8_t spp);
+
+/* RT_FEAT_* bits this build can render (all, less the RT_NO_* removals). */
+uint32_t rt_build_features(void);
+
+/* Short names of feature bits, for messages: "reflection", "box", ... */
+const char *rt_feature_name(uint32_t bit);
+
+#endif /* RT_RENDER_H */

@@ -1,0 +1,140 @@
+/* rt_scene: scene defaults and the per-object constants the tracer uses. */
+#include <string.h>
+#include "rt_scene.h"
+
+/* Largest cone slope r / h: flatter cones lose the unit-frame precision
+ * (k^2 must stay well inside Q16.16). */
+#define RT_MAX_CONE_SLOPE FX_INT(128)
+
+void rt_scene_init(rt_scene *s)
+{
+    memset(s, 0, sizeof *s);
+    s->cam.eye = fx_v3(0, 0, FX_INT(-10));
+    s->cam.look = fx_v3(0, 0, 0);
+    s->cam.up = fx_v3(0, FX_ONE, 0);
+    s->cam.fov = FX_INT(60);
+    s->ambient.r = s->ambient.g = s->ambient.b = FX_ONE;
+    s->width = 320;
+    s->height = 240;
+    s->spp = 1;
+    s->depth = RT_MAX_DEPTH;
+}
+
+/* Unit vector along an exact 64-bit vector (for normals from cross
+ * products of tiny edges, which would round to zero in Q16.16). */
+static fx_vec3 norm64(int64_t x, int64_t y, int64_t z)
+{
+    while (x > FX_MAX / 2 || x < FX_MIN / 2 || y > FX_MAX / 2 ||
+           y < FX_MIN / 2 || z > FX_MAX / 2 || z < FX_MIN / 2) {
+        x /= 2;
+        y /= 2;
+        z /= 2;
+    }
+    return fx_v3_normalize(fx_v3((fx_t)x, (fx_t)y, (fx_t)z));
+}
+
+static fx_vec3 cross_unit(fx_vec3 a, fx_vec3 b)
+{
+    return norm64((int64_t)a.y * b.z - (int64_t)a.z * b.y,
+                  (int64_t)a.z * b.x - (int64_t)a.x * b.z,
+                  (int64_t)a.x * b.y - (int64_t)a.y * b.x);
+}
+
+static int is_zero(fx_vec3 v)
+{
+    return v.x == 0 && v.y == 0 && v.z == 0;
+}
+
+/* Bounding sphere for an upright shape of radius r and height h. */
+static rt_status upright_bounds(rt_object *o)
+{
+    fx_t hh = o->h / 2;
+    if (o->r <= 0 || o->h <= 0)
+        return RT_ERR_DEGENERATE;
+    o->bc = fx_v3(o->a.x, fx_add(o->a.y, hh), o->a.z);
+    o->br = fx_v3_length(fx_v3(o->r, hh, 0));
+    o->inv_br = fx_recip(o->br);
+    o->ur = fx_div(o->r, o->br);
+    o->uh = fx_div(hh, o->br);
+    if (o->ur == 0 || o->uh == 0)
+        return RT_ERR_DEGENERATE;
+    return RT_OK;
+}
+
+rt_status rt_object_prepare(rt_object *o)
+{
+    switch (o->kind) {
+    case RT_SPHERE:
+        if (o->r <= 0)
+            return RT_ERR_DEGENERATE;
+        o->bc = o->a;
+        o->br = o->r;
+        o->convex = 1;
+        return RT_OK;
+    case RT_QUAD: {
+        fx_vec3 e1 = o->b, e2 = o->c;
+        if (is_zero(e1) || is_zero(e2))
+            return RT_ERR_DEGENERATE;
+        o->n = cross_unit(e1, e2);
+        if (is_zero(o->n))
+            return RT_ERR_DEGENERATE; /* parallel edges */
+        o->pu = cross_unit(e2, o->n);
+        o->pv = cross_unit(o->n, e1);
+        o->lu = fx_v3_dot(e1, o->pu);
+        o->lv = fx_v3_dot(e2, o->pv);
+        if (o->lu <= 0 || o->lv <= 0)
+            return RT_ERR_DEGENERATE;
+        o->dist = fx_v3_dot(o->n, o->a);
+        /* Centre a + (e1 + e2) / 2, radius half the longer diagonal. */
+        fx_vec3 half1 = fx_v3(e1.x / 2, e1.y / 2, e1.z / 2);
+        fx_vec3 half2 = fx_v3(e2.x / 2, e2.y / 2, e2.z / 2);
+        o->bc = fx_v3_add(o->a, fx_v3_add(half1, half2));
+        fx_t d1 = fx_v3_length(fx_v3_add(half1, half2));
+        fx_t d2 = fx_v3_length(fx_v3_sub(half1, half2));
+        o->br = fx_add(d1 > d2 ? d1 : d2, 1);
+        o->convex = 1;
+        return RT_OK;
+    }
+    case RT_BOX: {
+        if (o->b.x <= o->a.x || o->b.y <= o->a.y || o->b.z <= o->a.z)
+            return RT_ERR_DEGENERATE;
+        fx_vec3 half = fx_v3((fx_t)(((int64_t)o->b.x - o->a.x) / 2),
+                             (fx_t)(((int64_t)o->b.y - o->a.y) / 2),
+                             (fx_t)(((int64_t)o->b.z - o->a.z) / 2));
+        o->bc = fx_v3_add(o->a, half);
+        o->br = fx_add(fx_v3_length(half), 1);
+        o->convex = 1;
+        return RT_OK;
+    }
+    case RT_CYLINDER:
+        o->convex = (o->caps & (RT_CAP_BOTTOM | RT_CAP_TOP)) ==
+                    (RT_CAP_BOTTOM | RT_CAP_TOP);
+        return upright_bounds(o);
+    case RT_CONE:
+        o->caps &= RT_CAP_BOTTOM;
+        o->convex = o->caps != 0;
+        if (o->r <= 0 || o->h <= 0)
+            return RT_ERR_DEGENERATE;
+        o->k = fx_div(o->r, o->h);
+        if (o->k > RT_MAX_CONE_SLOPE || o->k == 0)
+            return RT_ERR_DEGENERATE;
+        return upright_bounds(o);
+    default:
+        return RT_ERR_ARG;
+    }
+}
+
+rt_status rt_material_prepare(rt_material *m)
+{
+    if (m->texture != RT_TEX_NONE) {
+        if (m->tex_scale <= 0)
+            return RT_ERR_ARG;
+        m->tex_inv = fx_recip(m->tex_scale);
+    }
+    if (m->bump != 0) {
+        if (m->bump_scale <= 0)
+            return RT_ERR_ARG;
+        m->bump_inv = fx_recip(m->bump_scale);
+    }
+    return RT_OK;
+}

@@ -1,0 +1,151 @@
+/*
+ * rt_scene: the scene description the renderer reads. The caller owns the
+ * storage (fixed-capacity arrays sized in rt_config.h); the parser fills it
+ * and rt_object_prepare() derives per-object constants.
+ *
+ * Geometry conventions: y is up. Cylinders and cones stand on their base
+ * centre and extend along +y. Boxes are axis-aligned. A quad is a
+ * parallelogram: corner + s*edge1 + t*edge2 for s, t in [0, 1].
+ */
+#ifndef RT_SCENE_H
+#define RT_SCENE_H
+
+#include <stdint.h>
+#include "rt_config.h"
+#include "fx_vec.h"
+
+/* Status codes: 0 is success, failures are negative. */
+typedef enum {
+    RT_OK = 0,
+    RT_ERR_ARG = -1,      /* an argument is out of range */
+    RT_ERR_PARSE = -2,    /* the scene text is malformed (see rt_parse_error) */
+    RT_ERR_CAPACITY = -3, /* a compile-time capacity was exceeded */
+    RT_ERR_ABORTED = -4,  /* the row callback asked to stop */
+    RT_ERR_DEGENERATE = -5, /* a shape has zero size or no defined normal */
+    RT_ERR_UNSUPPORTED = -6 /* the scene needs an effect this build removed */
+} rt_status;
+
+typedef struct {
+    fx_t r, g, b; /* linear, nominally 0..1 */
+} rt_rgb;
+
+typedef enum {
+    RT_TEX_NONE = 0,
+    RT_TEX_STRIPES,  /* bands across one axis: axis, color2, scale */
+    RT_TEX_CHECKER,  /* squares in x and z: color2, scale */
+    RT_TEX_CHECKER3D /* cubes in x, y and z: color2, scale */
+} rt_texture_kind;
+
+typedef struct {
+    rt_rgb color;       /* base colour */
+    fx_t ambient;       /* ka */
+    fx_t diffuse;       /* kd */
+    fx_t specular;      /* ks */
+    uint16_t shininess; /* Phong exponent, 1..1024 */
+    fx_t reflect;       /* kr, 0..1 */
+    fx_t transparency;  /* kt, 0..1 */
+    fx_t ior;           /* index of refraction, > 0 (used when kt > 0) */
+    uint8_t texture;    /* rt_texture_kind */
+    uint8_t axis;       /* stripes: 0 = x, 1 = y, 2 = z */
+    rt_rgb color2;      /* second texture colour */
+    fx_t tex_scale;     /* size of one stripe or cell, > 0 */
+    fx_t bump;          /* normal perturbation amplitude, 0 = none */
+    fx_t bump_scale;    /* size of one bump feature, > 0 */
+    /* Derived by rt_material_prepare(). */
+    fx_t tex_inv;       /* 1 / tex_scale */
+    fx_t bump_inv;      /* 1 / bump_scale */
+} rt_material;
+
+typedef enum {
+    RT_SPHERE = 0,
+    RT_QUAD,
+    RT_BOX,
+    RT_CYLINDER,
+    RT_CONE,
+    RT_KIND_COUNT
+} rt_kind;
+
+/* Cap flags for cylinders (both) and cones (bottom only). */
+#define RT_CAP_BOTTOM 1u
+#define RT_CAP_TOP 2u
+
+typedef struct {
+    uint8_t kind;     /* rt_kind */
+    uint8_t material; /* index into rt_scene.mat */
+    uint8_t caps;     /* RT_CAP_* */
+    uint8_t convex;   /* derived: a ray leaving the surface cannot re-hit it */
+    fx_vec3 a;        /* sphere: centre; quad: corner; box: min;
+                         cylinder, cone: base centre */
+    fx_vec3 b;        /* quad: edge1; box: max */
+    fx_vec3 c;        /* quad: edge2 */
+    fx_t r;           /* sphere, cylinder, cone: radius */
+    fx_t h;           /* cylinder, cone: height */
+    /* Derived by rt_object_prepare(). */
+    fx_vec3 n;        /* quad: unit normal, norm(edge1 x edge2) */
+    fx_vec3 pu, pv;   /* quad: unit in-plane axes across edge2 and edge1 */
+    fx_t lu, lv;      /* quad: 0 <= (p - a).pu <= lu, 0 <= (p - a).pv <= lv */
+    fx_t dist;        /* quad: n . a */
+    fx_vec3 bc;       /* bounding sphere centre */
+    fx_t br;          /* bounding sphere radius */
+    fx_t inv_br;      /* 1 / br: cylinders and cones are solved in the frame
+                         centred on bc and scaled by 1 / br */
+    fx_t ur, uh;      /* cylinder, cone: radius and half height in that frame */
+    fx_t k;           /* cone: slope r / h */
+} rt_object;
+
+typedef struct {
+    fx_vec3 pos;
+    rt_rgb color;
+} rt_light;
+
+typedef struct {
+    fx_vec3 eye, look, up;
+    fx_t fov; /* vertical field of view in degrees, 0 < fov < 180 */
+} rt_camera;
+
+typedef struct {
+    rt_camera cam;
+    rt_rgb background;
+    rt_rgb ambient;     /* ambient light colour, multiplies material ka */
+    uint16_t width;     /* default image size; the caller may override */
+    uint16_t height;
+    uint8_t spp;        /* default samples per pixel: 1, 4, 9 or 16 */
+    uint8_t depth;      /* default recursion depth, <= RT_MAX_DEPTH */
+    uint8_t n_materials;
+    uint8_t n_lights;
+    uint16_t n_objects;
+    uint32_t features;  /* RT_FEAT_* bits, derived by rt_scene_features() */
+    rt_material mat[RT_MAX_MATERIALS];
+    rt_light light[RT_MAX_LIGHTS];
+    rt_object obj[RT_MAX_OBJECTS];
+} rt_scene;
+
+/* Effects a scene needs (rt_scene.features). */
+#define RT_FEAT_SHADOWS      (1u << 0)
+#define RT_FEAT_REFLECTION   (1u << 1)
+#define RT_FEAT_REFRACTION   (1u << 2)
+#define RT_FEAT_TEXTURES     (1u << 3)
+#define RT_FEAT_BUMP         (1u << 4)
+#define RT_FEAT_SPECULAR     (1u << 5)
+#define RT_FEAT_MULTILIGHT   (1u << 6)
+#define RT_FEAT_SUPERSAMPLING (1u << 7)
+#define RT_FEAT_SPHERE       (1u << 8)
+#define RT_FEAT_QUAD         (1u << 9)
+#define RT_FEAT_BOX          (1u << 10)
+#define RT_FEAT_CYLINDER     (1u << 11)
+#define RT_FEAT_CONE         (1u << 12)
+
+/* Sets defaults: empty scene, camera at (0,0,-10) looking at the origin,
+ * fov 60, black background, white ambient, 320x240, 1 spp, depth 5. */
+void rt_scene_init(rt_scene *s);
+
+/* Derives an object's constants and checks its shape. Returns RT_OK, or
+ * RT_ERR_DEGENERATE for a zero radius, height, edge or extent, or for
+ * parallel quad edges. */
+rt_status rt_object_prepare(rt_object *o);
+
+/* Derives a material's constants (reciprocal scales). Returns RT_OK, or
+ * RT_ERR_ARG for a zero texture or bump scale. */
+rt_status rt_material_prepare(rt_material *m);
+
+#endif /* RT_SCENE_H */

@@ -1,0 +1,49 @@
+# Host build: the core, the POSIX port and the double reference renderer.
+
+ifeq ($(SANITIZE),1)
+HOST_BUILD ?= build/posix-san
+SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all \
+             -fno-omit-frame-pointer
+else
+HOST_BUILD ?= build/posix
+SAN_FLAGS :=
+endif
+
+HOST_OPT ?= -O2
+HOST_CFLAGS ?= -std=c99 $(HOST_OPT) -g -D_POSIX_C_SOURCE=200809L $(SAN_FLAGS)
+HOST_LDFLAGS ?= $(SAN_FLAGS)
+HOST_LIBS := -lm -lpthread
+
+# port/posix/main.c is the CLI; everything else there is a library the tests
+# link too.
+POSIX_MAIN := port/posix/main.c
+POSIX_LIB_SRC := $(filter-out $(POSIX_MAIN),$(sort $(wildcard port/posix/*.c)))
+
+HOST_CORE_OBJ := $(CORE_SRC:%.c=$(HOST_BUILD)/%.o)
+HOST_PORT_OBJ := $(POSIX_LIB_SRC:%.c=$(HOST_BUILD)/%.o)
+HOST_MAIN_OBJ := $(POSIX_MAIN:%.c=$(HOST_BUILD)/%.o)
+HOST_ALL_OBJ := $(HOST_CORE_OBJ) $(HOST_PORT_OBJ) $(HOST_MAIN_OBJ)
+
+FIXTRACE := $(HOST_BUILD)/fixtrace
+
+$(HOST_BUILD)/core/%.o: core/%.c | $(HOST_BUILD)/core
+	@$(if $(Q),echo "  CC      $<")
+	$(Q)$(CC) $(HOST_CFLAGS) $(CORE_WARN) -Icore -MMD -MP -c $< -o $@
+
+$(HOST_BUILD)/port/posix/%.o: port/posix/%.c | $(HOST_BUILD)/port/posix
+	@$(if $(Q),echo "  CC      $<")
+	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) -Icore -Iport/posix -MMD -MP -c $< -o $@
+
+$(FIXTRACE): $(HOST_ALL_OBJ)
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(CC) $(HOST_LDFLAGS) $^ -o $@ $(HOST_LIBS)
+
+$(HOST_BUILD)/core $(HOST_BUILD)/port/posix:
+	$(Q)mkdir -p $@
+
+-include $(HOST_ALL_OBJ:.o=.d)
+
+.PHONY: run
+run: $(FIXTRACE)
+	$(FIXTRACE) -W 640 -H 480 -o seed.ppm scenes/seed.scene
+	@echo "wrote $(CURDIR)/seed.ppm"

@@ -1,0 +1,29 @@
+# Tests: every tests/test_*.c is its own binary (one topic each); the
+# harness and all non-CLI host code link in. tests/run.sh runs them and the
+# script-level suites, and prints the final "N passed, N failed" line.
+
+TEST_SRC := $(sort $(wildcard tests/test_*.c))
+TEST_BIN := $(TEST_SRC:tests/%.c=$(HOST_BUILD)/tests/%)
+TEST_HARNESS_OBJ := $(HOST_BUILD)/tests/harness.o
+
+$(HOST_BUILD)/tests/%.o: tests/%.c | $(HOST_BUILD)/tests
+	@$(if $(Q),echo "  CC      $<")
+	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) -Wno-missing-prototypes -Icore \
+	    -Iport/posix -Itests -MMD -MP -c $< -o $@
+
+$(HOST_BUILD)/tests/test_%: $(HOST_BUILD)/tests/test_%.o $(TEST_HARNESS_OBJ) \
+                            $(HOST_CORE_OBJ) $(HOST_PORT_OBJ)
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(CC) $(HOST_LDFLAGS) $^ -o $@ $(HOST_LIBS)
+
+$(HOST_BUILD)/tests:
+	$(Q)mkdir -p $@
+
+-include $(TEST_SRC:tests/%.c=$(HOST_BUILD)/tests/%.d)
+
+.PHONY: test test-build
+test-build: $(FIXTRACE) $(TEST_BIN)
+
+test: test-build
+	$(Q)HOST_BUILD=$(HOST_BUILD) SANITIZE=$(SANITIZE) MAKE="$(MAKE)" \
+	    bash tests/run.sh

@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# Runs every test part and adds up their "N passed, N failed[, N skipped]"
+# lines. Parts: each unit-test binary build/<host>/tests/test_*, then each
+# tests/suite_*.sh script. A part that exits non-zero or prints no summary
+# counts as one failure. A part that needs a missing tool prints
+# "SKIPPED: <why>" and counts a skip; under CI (CI=true) a skip is a failure,
+# because CI installs every tool.
+set -u
+cd "$(dirname "$0")/.."
+HOST_BUILD=${HOST_BUILD:-build/posix}
+export HOST_BUILD
+export FIXTRACE="$HOST_BUILD/fixtrace"
+pass=0 fail=0 skip=0
+skipped_parts=""
+log_dir="$HOST_BUILD/test-logs"
+mkdir -p "$log_dir"
+
+run_part() {
+    local name=$1; shift
+    local log="$log_dir/$name.log"
+    local start=$SECONDS
+    "$@" >"$log" 2>&1
+    local rc=$?
+    local line
+    line=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$log" | tail -n 1)
+    local p=0 f=0 s=0
+    if [ -n "$line" ]; then
+        p=$(echo "$line" | sed -E 's/^([0-9]+) passed.*/\1/')
+        f=$(echo "$line" | sed -E 's/^[0-9]+ passed, ([0-9]+) failed.*/\1/')
+        s=$(echo "$line" | sed -nE 's/.*, ([0-9]+) skipped.*/\1/p')
+        s=${s:-0}
+    fi
+    if [ -z "$line" ] || { [ $rc -ne 0 ] && [ "$f" -eq 0 ]; }; then
+        f=$((f + 1))
+        echo "  $name: exit status $rc$( [ -z "$line" ] && echo ', no summary line')"
+    fi
+    if [ "$s" -gt 0 ]; then
+        skipped_parts="$skipped_parts
+  $name: $(grep -E '^SKIPPED:' "$log" | sed 's/^SKIPPED: //' | paste -sd ';' -)"
+        if [ "${CI:-}" = true ]; then
+            f=$((f + s)); s=0
+            echo "  $name: a skip counts as a failure under CI"
+        fi
+    fi
+    pass=$((pass + p)); fail=$((fail + f)); skip=$((skip + s))
+    printf '%-28s %6d passed %4d failed %3d skipped  (%ds)\n' \
+        "$name" "$p" "$f" "$s" $((SECONDS - start))
+    if [ "$f" -gt 0 ]; then
+        grep -E 'FAILED|error|Error' "$log" | head -n 20 | sed 's/^/    /'
+        echo "    (full log: $log)"
+    fi
+}
+
+for bin in "$HOST_BUILD"/tests/test_*; do
+    [ -x "$bin" ] || continue
+    run_part "$(basename "$bin")" "$bin"
+done
+for suite in tests/suite_*.sh; do
+    [ -f "$suite" ] || continue
+    run_part "$(basename "$suite" .sh)" bash "$suite"
+done
+
+if [ -n "$skipped_parts" ]; then
+    echo "Skipped parts (install the tool to run them):$skipped_parts"
+fi
+if [ "$skip" -gt 0 ]; then
+    echo "$pass passed, $fail failed, $skip skipped"
+else
+    echo "$pass passed, $fail failed"
+fi
+[ "$fail" -eq 0 ]
