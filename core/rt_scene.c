@@ -1,10 +1,10 @@
 /* rt_scene: scene defaults and the per-object constants the tracer uses. */
 #include <string.h>
-#include "rt_scene.h"
+#include "rt_internal.h"
 
 /* Largest cone slope r / h: flatter cones lose the unit-frame precision
  * (k^2 must stay well inside Q16.16). */
-#define RT_MAX_CONE_SLOPE FX_INT(128)
+#define RT_MAX_CONE_SLOPE FX_INT(64)
 
 void rt_scene_init(rt_scene *s)
 {
@@ -18,6 +18,7 @@ void rt_scene_init(rt_scene *s)
     s->height = 240;
     s->spp = 1;
     s->depth = RT_MAX_DEPTH;
+    s->shadows = 1;
 }
 
 /* Unit vector along an exact 64-bit vector (for normals from cross
@@ -33,7 +34,7 @@ static fx_vec3 norm64(int64_t x, int64_t y, int64_t z)
     return fx_v3_normalize(fx_v3((fx_t)x, (fx_t)y, (fx_t)z));
 }
 
-static fx_vec3 cross_unit(fx_vec3 a, fx_vec3 b)
+fx_vec3 rt_cross_unit(fx_vec3 a, fx_vec3 b)
 {
     return norm64((int64_t)a.y * b.z - (int64_t)a.z * b.y,
                   (int64_t)a.z * b.x - (int64_t)a.x * b.z,
@@ -45,17 +46,31 @@ static int is_zero(fx_vec3 v)
     return v.x == 0 && v.y == 0 && v.z == 0;
 }
 
-/* Bounding sphere for an upright shape of radius r and height h. */
+/* Scales v by 2^-k, rounding to nearest; exact for k <= 0. */
+static fx_t scale_pow2(fx_t v, int k)
+{
+    if (k <= 0)
+        return fx_sat64((int64_t)v * ((int64_t)1 << -k));
+    return (fx_t)(((int64_t)v + ((int64_t)1 << (k - 1))) >> k);
+}
+
+/* Bounding sphere and unit frame for an upright shape of radius r and
+ * height h. */
 static rt_status upright_bounds(rt_object *o)
 {
     fx_t hh = o->h / 2;
+    int k = 0;
     if (o->r <= 0 || o->h <= 0)
         return RT_ERR_DEGENERATE;
     o->bc = fx_v3(o->a.x, fx_add(o->a.y, hh), o->a.z);
-    o->br = fx_v3_length(fx_v3(o->r, hh, 0));
-    o->inv_br = fx_recip(o->br);
-    o->ur = fx_div(o->r, o->br);
-    o->uh = fx_div(hh, o->br);
+    o->br = fx_add(fx_v3_length(fx_v3(o->r, hh, 0)), 1);
+    while (k < 15 && ((int64_t)o->br >> k) > FX_ONE)
+        k++;
+    while (k > -15 && ((int64_t)o->br << -k) <= FX_HALF)
+        k--;
+    o->ushift = (int8_t)k;
+    o->ur = scale_pow2(o->r, k);
+    o->uh = scale_pow2(hh, k);
     if (o->ur == 0 || o->uh == 0)
         return RT_ERR_DEGENERATE;
     return RT_OK;
@@ -75,11 +90,11 @@ rt_status rt_object_prepare(rt_object *o)
         fx_vec3 e1 = o->b, e2 = o->c;
         if (is_zero(e1) || is_zero(e2))
             return RT_ERR_DEGENERATE;
-        o->n = cross_unit(e1, e2);
+        o->n = rt_cross_unit(e1, e2);
         if (is_zero(o->n))
             return RT_ERR_DEGENERATE; /* parallel edges */
-        o->pu = cross_unit(e2, o->n);
-        o->pv = cross_unit(o->n, e1);
+        o->pu = rt_cross_unit(e2, o->n);
+        o->pv = rt_cross_unit(o->n, e1);
         o->lu = fx_v3_dot(e1, o->pu);
         o->lv = fx_v3_dot(e2, o->pv);
         if (o->lu <= 0 || o->lv <= 0)
@@ -126,6 +141,11 @@ rt_status rt_object_prepare(rt_object *o)
 
 rt_status rt_material_prepare(rt_material *m)
 {
+    if (m->transparency > 0) {
+        if (m->ior <= 0)
+            return RT_ERR_ARG;
+        m->ior_inv = fx_recip(m->ior);
+    }
     if (m->texture != RT_TEX_NONE) {
         if (m->tex_scale <= 0)
             return RT_ERR_ARG;

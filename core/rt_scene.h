@@ -53,6 +53,7 @@ typedef struct {
     fx_t bump_scale;    /* size of one bump feature, > 0 */
     /* Derived by rt_material_prepare(). */
     fx_t tex_inv;       /* 1 / tex_scale */
+    fx_t ior_inv;       /* 1 / ior */
     fx_t bump_inv;      /* 1 / bump_scale */
 } rt_material;
 
@@ -87,8 +88,9 @@ typedef struct {
     fx_t dist;        /* quad: n . a */
     fx_vec3 bc;       /* bounding sphere centre */
     fx_t br;          /* bounding sphere radius */
-    fx_t inv_br;      /* 1 / br: cylinders and cones are solved in the frame
-                         centred on bc and scaled by 1 / br */
+    int8_t ushift;    /* cylinders and cones are solved in the frame centred
+                         on bc and scaled by 2^-ushift (exact), which brings
+                         br into (1/2, 1] */
     fx_t ur, uh;      /* cylinder, cone: radius and half height in that frame */
     fx_t k;           /* cone: slope r / h */
 } rt_object;
@@ -111,6 +113,7 @@ typedef struct {
     uint16_t height;
     uint8_t spp;        /* default samples per pixel: 1, 4, 9 or 16 */
     uint8_t depth;      /* default recursion depth, <= RT_MAX_DEPTH */
+    uint8_t shadows;    /* 1: lights cast shadows (default), 0: none */
     uint8_t n_materials;
     uint8_t n_lights;
     uint16_t n_objects;

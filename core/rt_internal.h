@@ -1,0 +1,46 @@
+/*
+ * Declarations shared by the core's own files; not part of the public API.
+ */
+#ifndef RT_INTERNAL_H
+#define RT_INTERNAL_H
+
+#include "rt_scene.h"
+#include "rt_render.h"
+
+/* Smallest hit distance and secondary-ray offset: 1/512 (see
+ * docs/render-model.md and docs/numerics.md). */
+#define RT_EPS ((fx_t)128)
+
+/* |d.n| below this (Q32.32) counts as parallel: 2^-16. */
+#define RT_PAR_Q32 ((int64_t)1 << 16)
+
+typedef struct {
+    fx_vec3 o;   /* origin */
+    fx_vec3 d;   /* unit direction */
+    fx_vec3 inv; /* 1 / d per component, saturated (boxes only) */
+} rt_ray;
+
+/* Ray-object intersection: the nearest t with tmin < t < tmax. Returns 1
+ * and sets *t and *part (which face, cap or side) on a hit, else 0. */
+int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
+                 fx_t *t, uint8_t *part);
+
+/* Outward unit normal of o at surface point p on the given part. */
+fx_vec3 rt_normal(const rt_object *o, fx_vec3 p, uint8_t part);
+
+/* Texture colour of material m on object o at point p. */
+rt_rgb rt_texel(const rt_material *m, const rt_object *o, fx_vec3 p);
+
+/* Bump-perturbed unit normal (m->bump != 0). */
+fx_vec3 rt_bump(const rt_material *m, const rt_object *o, fx_vec3 p,
+                fx_vec3 n);
+
+/* Unit vector along a x b, from the exact 64-bit cross product, so tiny
+ * vectors do not round to zero. The zero vector if a and b are parallel. */
+fx_vec3 rt_cross_unit(fx_vec3 a, fx_vec3 b);
+
+/* tan(deg / 2) for 0 < deg < 180, relative error about 2^-28 before the
+ * final rounding to Q16.16; saturates. */
+fx_t rt_tan_half_deg(fx_t deg);
+
+#endif /* RT_INTERNAL_H */

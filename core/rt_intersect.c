@@ -1,0 +1,288 @@
+/*
+ * rt_intersect: ray-shape intersection and surface normals.
+ *
+ * Every shape is first tested against its bounding sphere with the
+ * geometric form (closest approach, then the chord), which is exact in
+ * 64 bits for any distance and culls most rays cheaply. Cylinders and cones
+ * are then solved in a frame centred on that sphere and scaled by a power
+ * of two, so their quadratic has coefficients near 1 whatever the object's
+ * size or distance: the discriminant keeps its precision for small and far
+ * objects alike. See docs/numerics.md.
+ */
+#include "rt_internal.h"
+
+/* Closest approach of the ray to the bounding sphere (c, r). Returns 0 on
+ * a miss; else *tca (Q16.16, may exceed the fx_t range), *thc (half chord)
+ * and *h = c - (o + tca d), the offset from the closest point to c. */
+static int bsphere(fx_vec3 c, fx_t r, const rt_ray *ray, int64_t *tca,
+                   int64_t *thc, int64_t h[3])
+{
+    int64_t ox = (int64_t)c.x - ray->o.x;
+    int64_t oy = (int64_t)c.y - ray->o.y;
+    int64_t oz = (int64_t)c.z - ray->o.z;
+    /* |oc| < 2^33 and |d| <= 2^16, so each product stays below 2^49. */
+    int64_t q = ox * ray->d.x + oy * ray->d.y + oz * ray->d.z;
+    int64_t t = (q + 0x8000) >> 16;
+    h[0] = ox - ((t * ray->d.x + 0x8000) >> 16);
+    h[1] = oy - ((t * ray->d.y + 0x8000) >> 16);
+    h[2] = oz - ((t * ray->d.z + 0x8000) >> 16);
+    if (h[0] > r || h[0] < -r || h[1] > r || h[1] < -r || h[2] > r ||
+        h[2] < -r)
+        return 0;
+    uint64_t h2 = (uint64_t)(h[0] * h[0]) + (uint64_t)(h[1] * h[1]) +
+                  (uint64_t)(h[2] * h[2]);
+    uint64_t r2 = (uint64_t)((int64_t)r * r);
+    if (h2 > r2)
+        return 0;
+    *tca = t;
+    *thc = fx_sqrt_q32(r2 - h2);
+    return 1;
+}
+
+/* Accepts t if tmin < t < tmax and nearer than the best so far. */
+static int take(int64_t t, fx_t tmin, fx_t *best)
+{
+    if (t > tmin && t < *best) {
+        *best = (fx_t)t;
+        return 1;
+    }
+    return 0;
+}
+
+static int hit_sphere(const rt_object *o, const rt_ray *r, fx_t tmin,
+                      fx_t tmax, fx_t *t, uint8_t *part)
+{
+    int64_t tca, thc, h[3];
+    fx_t best = tmax;
+    if (!bsphere(o->a, o->r, r, &tca, &thc, h))
+        return 0;
+    if (!take(tca - thc, tmin, &best) && !take(tca + thc, tmin, &best))
+        return 0;
+    *t = best;
+    *part = 0;
+    return 1;
+}
+
+static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
+                    fx_t tmax, fx_t *t, uint8_t *part)
+{
+    int64_t den = fx_v3_dot_q32(r->d, o->n);
+    if (den < RT_PAR_Q32 && den > -RT_PAR_Q32)
+        return 0;
+    /* num = (dist - o.n) in Q32.32; t = num / den, with den kept to 24
+     * fractional bits so grazing rays keep their precision. */
+    int64_t num = ((int64_t)o->dist << 16) - fx_v3_dot_q32(r->o, o->n);
+    if ((num < 0) != (den < 0))
+        return 0;
+    int64_t den24 = den >> 8;
+    if (den24 == 0)
+        return 0;
+    /* |num| < 2^49 (|dist|, |o.n| < 2^31 * 2^16): the shift stays < 2^57. */
+    int64_t tt = (num * 256) / den24;
+    if (tt <= tmin || tt >= tmax)
+        return 0;
+    int64_t qx = (int64_t)r->o.x + ((tt * r->d.x + 0x8000) >> 16) - o->a.x;
+    int64_t qy = (int64_t)r->o.y + ((tt * r->d.y + 0x8000) >> 16) - o->a.y;
+    int64_t qz = (int64_t)r->o.z + ((tt * r->d.z + 0x8000) >> 16) - o->a.z;
+    int64_t u = qx * o->pu.x + qy * o->pu.y + qz * o->pu.z;
+    int64_t v = qx * o->pv.x + qy * o->pv.y + qz * o->pv.z;
+    if (u < 0 || v < 0 || u > ((int64_t)o->lu << 16) ||
+        v > ((int64_t)o->lv << 16))
+        return 0;
+    *t = (fx_t)tt;
+    *part = 0;
+    return 1;
+}
+
+static int hit_box(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
+                   fx_t *t, uint8_t *part)
+{
+    const fx_t *lo = &o->a.x, *hi = &o->b.x;
+    const fx_t *org = &r->o.x, *inv = &r->inv.x;
+    fx_t tn = FX_MIN, tf = FX_MAX;
+    int an = 0, af = 0;
+    for (int i = 0; i < 3; i++) {
+        fx_t t1 = fx_mul(fx_sub(lo[i], org[i]), inv[i]);
+        fx_t t2 = fx_mul(fx_sub(hi[i], org[i]), inv[i]);
+        if (t1 > t2) {
+            fx_t tmp = t1;
+            t1 = t2;
+            t2 = tmp;
+        }
+        if (t1 > tn) {
+            tn = t1;
+            an = i;
+        }
+        if (t2 < tf) {
+            tf = t2;
+            af = i;
+        }
+    }
+    if (tn > tf)
+        return 0;
+    /* part: the axis of the face, entry face first, else exit face. */
+    if (tn > tmin && tn < tmax) {
+        *t = tn;
+        *part = (uint8_t)an;
+        return 1;
+    }
+    if (tf > tmin && tf < tmax) {
+        *t = tf;
+        *part = (uint8_t)af;
+        return 1;
+    }
+    return 0;
+}
+
+/* Scales v by 2^-k, rounding to nearest (k may be negative). */
+static fx_t to_frame(int64_t v, int k)
+{
+    if (k <= 0)
+        return fx_sat64(v * ((int64_t)1 << -k));
+    return fx_sat64((v + ((int64_t)1 << (k - 1))) >> k);
+}
+
+/* World distance of a frame distance: tca + tl * 2^k. */
+static int64_t from_frame(int64_t tca, fx_t tl, int k)
+{
+    if (k >= 0)
+        return tca + (int64_t)tl * ((int64_t)1 << k);
+    return tca + (((int64_t)tl + ((int64_t)1 << (-k - 1))) >> -k);
+}
+
+/* Roots of a t^2 + 2 b t + c = 0 (Q16.16), cancellation-free: q = -(b +
+ * sign(b) sqrt(b^2 - ac)), roots q / a and c / q. Returns the count. */
+static int quadratic(fx_t a, fx_t b, fx_t c, fx_t root[2])
+{
+    int64_t disc = (int64_t)b * b - (int64_t)a * c;
+    if (disc < 0)
+        return 0;
+    fx_t sq = (fx_t)fx_sqrt_q32((uint64_t)disc);
+    fx_t q = b >= 0 ? fx_neg(fx_add(b, sq)) : fx_sub(sq, b);
+    if (q == 0) {
+        root[0] = root[1] = 0;
+        return 1;
+    }
+    fx_t r0 = fx_div(q, a), r1 = fx_div(c, q);
+    root[0] = r0 < r1 ? r0 : r1;
+    root[1] = r0 < r1 ? r1 : r0;
+    return 2;
+}
+
+/* Cylinder (kind RT_CYLINDER) or cone, in the object's unit frame. */
+static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
+                       fx_t tmax, fx_t *t, uint8_t *part)
+{
+    int64_t tca, thc, h[3];
+    fx_t best = tmax, root[2];
+    int k = o->ushift, found = 0, cone = o->kind == RT_CONE;
+    if (!bsphere(o->bc, o->br, r, &tca, &thc, h))
+        return 0;
+    if (tca + thc <= tmin || tca - thc >= tmax)
+        return 0;
+    /* Closest point on the ray, relative to the centre, in the frame. */
+    fx_t px = to_frame(-h[0], k), py = to_frame(-h[1], k);
+    fx_t pz = to_frame(-h[2], k);
+    fx_t dx = r->d.x, dy = r->d.y, dz = r->d.z;
+    fx_t ur = o->ur, uh = o->uh;
+
+    /* Side: x^2 + z^2 = R(y)^2, R = ur (cylinder) or k (uh - y) (cone). */
+    fx_t a = fx_from_q32((int64_t)dx * dx + (int64_t)dz * dz);
+    fx_t b = fx_from_q32((int64_t)px * dx + (int64_t)pz * dz);
+    fx_t c = fx_from_q32((int64_t)px * px + (int64_t)pz * pz -
+                         (int64_t)ur * ur);
+    if (cone) {
+        fx_t kdy = fx_mul(o->k, dy), ky = fx_mul(o->k, fx_sub(uh, py));
+        a = fx_sub(a, fx_mul(kdy, kdy));
+        b = fx_add(b, fx_mul(ky, kdy));
+        c = fx_from_q32((int64_t)px * px + (int64_t)pz * pz -
+                        (int64_t)ky * ky);
+    }
+    if (a != 0) {
+        int n = quadratic(a, b, c, root);
+        for (int i = 0; i < n; i++) {
+            fx_t y = fx_add(py, fx_mul(root[i], dy));
+            if (y < -uh || y > uh)
+                continue;
+            if (take(from_frame(tca, root[i], k), tmin, &best)) {
+                *part = 0;
+                found = 1;
+                break;
+            }
+        }
+    }
+    /* Caps: discs at y = -uh (bottom) and y = +uh (top, cylinder only). */
+    if (dy != 0) {
+        for (int cap = 0; cap < 2; cap++) {
+            if (!(o->caps & (cap ? RT_CAP_TOP : RT_CAP_BOTTOM)))
+                continue;
+            fx_t tl = fx_div(fx_sub(cap ? uh : -uh, py), dy);
+            fx_t x = fx_add(px, fx_mul(tl, dx));
+            fx_t z = fx_add(pz, fx_mul(tl, dz));
+            if ((int64_t)x * x + (int64_t)z * z > (int64_t)ur * ur)
+                continue;
+            if (take(from_frame(tca, tl, k), tmin, &best)) {
+                *part = (uint8_t)(1 + cap);
+                found = 1;
+            }
+        }
+    }
+    if (found)
+        *t = best;
+    return found;
+}
+
+int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
+                 fx_t *t, uint8_t *part)
+{
+    int64_t tca, thc, h[3];
+    switch (o->kind) {
+    case RT_SPHERE:
+        return hit_sphere(o, r, tmin, tmax, t, part);
+    case RT_QUAD:
+    case RT_BOX:
+        if (!bsphere(o->bc, o->br, r, &tca, &thc, h) ||
+            tca + thc <= tmin || tca - thc >= tmax)
+            return 0;
+        return o->kind == RT_QUAD ? hit_quad(o, r, tmin, tmax, t, part)
+                                  : hit_box(o, r, tmin, tmax, t, part);
+    case RT_CYLINDER:
+    case RT_CONE:
+        return hit_upright(o, r, tmin, tmax, t, part);
+    default:
+        return 0;
+    }
+}
+
+fx_vec3 rt_normal(const rt_object *o, fx_vec3 p, uint8_t part)
+{
+    switch (o->kind) {
+    case RT_SPHERE:
+        return fx_v3_normalize(fx_v3_sub(p, o->a));
+    case RT_QUAD:
+        return o->n;
+    case RT_BOX: {
+        /* part is the axis of the face; its side is the one p lies on. */
+        const fx_t *pc = &p.x, *cc = &o->bc.x;
+        fx_t v[3] = { 0, 0, 0 };
+        v[part] = pc[part] > cc[part] ? FX_ONE : -FX_ONE;
+        return fx_v3(v[0], v[1], v[2]);
+    }
+    default: {
+        if (part == 1)
+            return fx_v3(0, -FX_ONE, 0);
+        if (part == 2)
+            return fx_v3(0, FX_ONE, 0);
+        fx_t x = fx_sub(p.x, o->a.x), z = fx_sub(p.z, o->a.z);
+        fx_t y = 0;
+        if (o->kind == RT_CONE) {
+            fx_t rho = (fx_t)fx_sqrt_q32((uint64_t)((int64_t)x * x) +
+                                         (uint64_t)((int64_t)z * z));
+            if (rho == 0)
+                return fx_v3(0, FX_ONE, 0); /* apex */
+            y = fx_mul(o->k, rho);
+        }
+        return fx_v3_normalize(fx_v3(x, y, z));
+    }
+    }
+}

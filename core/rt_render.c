@@ -1,0 +1,239 @@
+/*
+ * rt_render: camera rays, supersampling and the scanline boundary.
+ * Each row depends only on its own y, so any banding of rows gives the
+ * same bytes.
+ */
+#include "rt_trace.h"
+
+void rt_options_from_scene(rt_options *o, const rt_scene *s)
+{
+    o->width = s->width;
+    o->height = s->height;
+    o->spp = s->spp;
+    o->depth = s->depth;
+    o->format = RT_RGB888;
+    o->dither = 0;
+}
+
+size_t rt_row_bytes(const rt_options *o)
+{
+    return (size_t)o->width * (o->format == RT_RGB888 ? 3u : 2u);
+}
+
+/* Grid side n for spp = n * n, or 0 if spp is not a supported square. */
+static unsigned grid_side(unsigned spp)
+{
+    for (unsigned n = 1; n <= RT_MAX_SPP_SIDE; n++)
+        if (n * n == spp)
+            return n;
+    return 0;
+}
+
+uint32_t rt_scene_features(const rt_scene *s, uint8_t spp)
+{
+    static const uint32_t kind_bit[RT_KIND_COUNT] = {
+        RT_FEAT_SPHERE, RT_FEAT_QUAD, RT_FEAT_BOX, RT_FEAT_CYLINDER,
+        RT_FEAT_CONE
+    };
+    uint32_t f = 0;
+    for (unsigned i = 0; i < s->n_objects; i++) {
+        const rt_material *m = &s->mat[s->obj[i].material];
+        f |= kind_bit[s->obj[i].kind];
+        if (m->reflect > 0)
+            f |= RT_FEAT_REFLECTION;
+        if (m->transparency > 0)
+            f |= RT_FEAT_REFRACTION;
+        if (m->texture != RT_TEX_NONE)
+            f |= RT_FEAT_TEXTURES;
+        if (m->bump != 0)
+            f |= RT_FEAT_BUMP;
+        if (m->specular > 0 && s->n_lights > 0)
+            f |= RT_FEAT_SPECULAR;
+    }
+    if (s->shadows && s->n_lights > 0 && s->n_objects > 0)
+        f |= RT_FEAT_SHADOWS;
+    if (s->n_lights > 1)
+        f |= RT_FEAT_MULTILIGHT;
+    if (spp > 1)
+        f |= RT_FEAT_SUPERSAMPLING;
+    return f;
+}
+
+uint32_t rt_build_features(void)
+{
+    uint32_t f = 0xFFFFFFFFu;
+#ifdef RT_NO_SHADOWS
+    f &= ~RT_FEAT_SHADOWS;
+#endif
+#ifdef RT_NO_REFLECTION
+    f &= ~RT_FEAT_REFLECTION;
+#endif
+#ifdef RT_NO_REFRACTION
+    f &= ~RT_FEAT_REFRACTION;
+#endif
+#ifdef RT_NO_TEXTURES
+    f &= ~RT_FEAT_TEXTURES;
+#endif
+#ifdef RT_NO_BUMP
+    f &= ~RT_FEAT_BUMP;
+#endif
+#ifdef RT_NO_SPECULAR
+    f &= ~RT_FEAT_SPECULAR;
+#endif
+#ifdef RT_NO_MULTILIGHT
+    f &= ~RT_FEAT_MULTILIGHT;
+#endif
+#ifdef RT_NO_SUPERSAMPLING
+    f &= ~RT_FEAT_SUPERSAMPLING;
+#endif
+#ifdef RT_NO_SPHERE
+    f &= ~RT_FEAT_SPHERE;
+#endif
+#ifdef RT_NO_QUAD
+    f &= ~RT_FEAT_QUAD;
+#endif
+#ifdef RT_NO_BOX
+    f &= ~RT_FEAT_BOX;
+#endif
+#ifdef RT_NO_CYLINDER
+    f &= ~RT_FEAT_CYLINDER;
+#endif
+#ifdef RT_NO_CONE
+    f &= ~RT_FEAT_CONE;
+#endif
+    return f;
+}
+
+const char *rt_feature_name(uint32_t bit)
+{
+    static const char *const names[] = {
+        "shadows", "reflection", "refraction", "textures", "bump",
+        "specular", "multiple lights", "supersampling", "sphere", "quad",
+        "box", "cylinder", "cone"
+    };
+    for (unsigned i = 0; i < sizeof names / sizeof names[0]; i++)
+        if (bit == (1u << i))
+            return names[i];
+    return "unknown";
+}
+
+/* Per-frame camera constants. */
+typedef struct {
+    fx_vec3 w, right, up;
+    int64_t step; /* half / (n H) with 32 fractional bits */
+    unsigned n;   /* grid side */
+} cam_frame;
+
+static void cam_setup(cam_frame *cf, const rt_scene *s, const rt_options *o,
+                      unsigned n)
+{
+    cf->w = fx_v3_normalize(fx_v3_sub(s->cam.look, s->cam.eye));
+    cf->right = rt_cross_unit(s->cam.up, cf->w);
+    cf->up = rt_cross_unit(cf->w, cf->right);
+    cf->n = n;
+    /* half < 2^31 in Q16.16, so half << 16 < 2^47. */
+    int64_t half = rt_tan_half_deg(s->cam.fov);
+    cf->step = (half * 65536) / (int64_t)(n * o->height);
+}
+
+/* Screen offset k * half / (n H) as Q16.16; |k| <= n * 2 * RT_MAX_WIDTH. */
+static fx_t cam_offset(const cam_frame *cf, int32_t k)
+{
+    return fx_sat64(((int64_t)k * cf->step + 0x8000) >> 16);
+}
+
+static const uint8_t bayer4[4][4] = {
+    { 0, 8, 2, 10 }, { 12, 4, 14, 6 }, { 3, 11, 1, 9 }, { 15, 7, 13, 5 }
+};
+
+/* Adds an ordered-dither threshold below one output step (8 for 5 bits,
+ * 4 for 6 bits), so rounding down to 5/6 bits averages out. */
+static unsigned dith(unsigned v, unsigned step, unsigned t)
+{
+    v += (t * step) / 16;
+    return v > 255 ? 255 : v;
+}
+
+static void put_pixel(uint8_t *row, const rt_options *o, unsigned x,
+                      unsigned y, const uint8_t rgb8[3])
+{
+    if (o->format == RT_RGB888) {
+        row[3 * x] = rgb8[0];
+        row[3 * x + 1] = rgb8[1];
+        row[3 * x + 2] = rgb8[2];
+        return;
+    }
+    unsigned r = rgb8[0], g = rgb8[1], b = rgb8[2];
+    if (o->dither) {
+        unsigned t = bayer4[y & 3][x & 3];
+        r = dith(r, 8, t);
+        g = dith(g, 4, t);
+        b = dith(b, 8, t);
+    }
+    unsigned v = ((r >> 3) << 11) | ((g >> 2) << 5) | (b >> 3);
+    uint8_t lo = (uint8_t)(v & 0xFF), hi = (uint8_t)(v >> 8);
+    row[2 * x] = o->format == RT_RGB565_LE ? lo : hi;
+    row[2 * x + 1] = o->format == RT_RGB565_LE ? hi : lo;
+}
+
+static fx_t clamp01(fx_t v)
+{
+    return v < 0 ? 0 : (v > FX_ONE ? FX_ONE : v);
+}
+
+rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
+                         int y1, uint8_t *row_buf, rt_row_fn fn, void *ctx,
+                         rt_stats *stats)
+{
+    unsigned n = grid_side(o->spp);
+    if (!s || !o || !row_buf || !fn || n == 0 || o->width < 1 ||
+        o->width > RT_MAX_WIDTH || o->height < 1 ||
+        o->height > RT_MAX_HEIGHT || o->depth > RT_MAX_DEPTH ||
+        o->format > RT_RGB565_BE || y0 < 0 || y1 > (int)o->height ||
+        y0 > y1)
+        return RT_ERR_ARG;
+    uint32_t feat = rt_scene_features(s, o->spp);
+    if (feat & ~rt_build_features())
+        return RT_ERR_UNSUPPORTED;
+
+    rt_tracer tr;
+    tr.scene = s;
+    tr.max_depth = o->depth;
+    tr.feat = feat;
+    tr.stats = stats;
+    cam_frame cf;
+    cam_setup(&cf, s, o, n);
+    const unsigned spp = n * n;
+    const int32_t wn = (int32_t)(o->width * n), hn = (int32_t)(o->height * n);
+
+    for (int y = y0; y < y1; y++) {
+        for (unsigned x = 0; x < o->width; x++) {
+            int64_t sum[3] = { 0, 0, 0 };
+            for (unsigned j = 0; j < n; j++) {
+                fx_t sy = cam_offset(&cf, hn - (int32_t)(2 * (unsigned)y * n +
+                                                         2 * j + 1));
+                fx_vec3 base = fx_v3_madd(cf.w, cf.up, sy);
+                for (unsigned i = 0; i < n; i++) {
+                    fx_t sx = cam_offset(&cf, (int32_t)(2 * x * n + 2 * i + 1) -
+                                                  wn);
+                    rt_ray r;
+                    rt_ray_set(&r, s->cam.eye,
+                               fx_v3_normalize(fx_v3_madd(base, cf.right, sx)),
+                               feat);
+                    RT_COUNT(&tr, primary);
+                    rt_rgb c = rt_trace(&tr, &r, 0, 0xFFFFu);
+                    sum[0] += clamp01(c.r);
+                    sum[1] += clamp01(c.g);
+                    sum[2] += clamp01(c.b);
+                }
+            }
+            uint8_t rgb8[3];
+            for (int k = 0; k < 3; k++)
+                rgb8[k] = fx_to_u8((fx_t)((sum[k] + spp / 2) / spp));
+            put_pixel(row_buf, o, x, (unsigned)y, rgb8);
+        }
+        if (fn(ctx, y, row_buf, rt_row_bytes(o)) != 0)
+            return RT_ERR_ABORTED;
+    }
+    return RT_OK;
+}

@@ -1,0 +1,211 @@
+/*
+ * rt_trace: Whitted ray tracing in Q16.16 (docs/render-model.md):
+ * ambient + Lambert + Phong from point lights with hard shadows, recursive
+ * reflection and refraction with total internal reflection. Recursion is
+ * capped by RT_MAX_DEPTH at compile time and by the caller's depth.
+ */
+#include "rt_trace.h"
+
+#define NO_SKIP 0xFFFFu
+
+static rt_rgb rgb(fx_t r, fx_t g, fx_t b)
+{
+    rt_rgb c;
+    c.r = r;
+    c.g = g;
+    c.b = b;
+    return c;
+}
+
+/* c += w * a (per channel), saturating. */
+static void rgb_madd(rt_rgb *c, rt_rgb a, fx_t w)
+{
+    c->r = fx_add(c->r, fx_mul(a.r, w));
+    c->g = fx_add(c->g, fx_mul(a.g, w));
+    c->b = fx_add(c->b, fx_mul(a.b, w));
+}
+
+/* a (*) b, per channel. */
+static rt_rgb rgb_mul(rt_rgb a, rt_rgb b)
+{
+    return rgb(fx_mul(a.r, b.r), fx_mul(a.g, b.g), fx_mul(a.b, b.b));
+}
+
+void rt_ray_set(rt_ray *r, fx_vec3 o, fx_vec3 d, uint32_t feat)
+{
+    r->o = o;
+    r->d = d;
+    if (feat & RT_FEAT_BOX)
+        r->inv = fx_v3(fx_recip(d.x), fx_recip(d.y), fx_recip(d.z));
+}
+
+/* Nearest hit among all objects but `skip`. */
+static int nearest(const rt_tracer *tr, const rt_ray *r, unsigned skip,
+                   fx_t *t, uint16_t *obj, uint8_t *part)
+{
+    const rt_scene *s = tr->scene;
+    fx_t best = FX_MAX;
+    int found = 0;
+    for (unsigned i = 0; i < s->n_objects; i++) {
+        fx_t ti;
+        uint8_t pi;
+        if (i == skip)
+            continue;
+        RT_COUNT(tr, tests);
+        if (rt_intersect(&s->obj[i], r, RT_EPS, best, &ti, &pi)) {
+            best = ti;
+            *obj = (uint16_t)i;
+            *part = pi;
+            found = 1;
+        }
+    }
+    *t = best;
+    return found;
+}
+
+#if !defined(RT_NO_SHADOWS)
+/* Any blocker with RT_EPS < t < tmax: stops at the first. */
+static int occluded(const rt_tracer *tr, const rt_ray *r, fx_t tmax,
+                    unsigned skip)
+{
+    const rt_scene *s = tr->scene;
+    for (unsigned i = 0; i < s->n_objects; i++) {
+        fx_t ti;
+        uint8_t pi;
+        if (i == skip)
+            continue;
+        RT_COUNT(tr, tests);
+        if (rt_intersect(&s->obj[i], r, RT_EPS, tmax, &ti, &pi))
+            return 1;
+    }
+    return 0;
+}
+#endif
+
+#if !defined(RT_NO_SPECULAR)
+/* x^n for 0 <= x <= 1 by squaring; each step rounds to nearest. */
+static fx_t fx_powi(fx_t x, unsigned n)
+{
+    fx_t r = FX_ONE;
+    while (n) {
+        if (n & 1)
+            r = fx_mul(r, x);
+        n >>= 1;
+        if (n)
+            x = fx_mul(x, x);
+    }
+    return r;
+}
+#endif
+
+#if !defined(RT_NO_REFLECTION) || !defined(RT_NO_REFRACTION)
+/* Mirror direction d - 2 (d.n) n, renormalised. */
+static fx_vec3 reflect_dir(fx_vec3 d, fx_vec3 n)
+{
+    return fx_v3_normalize(fx_v3_madd(d, n, -2 * fx_v3_dotn(d, n)));
+}
+#endif
+
+rt_rgb rt_trace(const rt_tracer *tr, const rt_ray *r, unsigned depth,
+                unsigned skip)
+{
+    const rt_scene *s = tr->scene;
+    fx_t t;
+    uint16_t oi = 0;
+    uint8_t part = 0;
+    if (!nearest(tr, r, skip, &t, &oi, &part))
+        return s->background;
+
+    const rt_object *o = &s->obj[oi];
+    const rt_material *m = &s->mat[o->material];
+    fx_vec3 p = fx_v3_madd(r->o, r->d, t);
+    fx_vec3 ng = rt_normal(o, p, part);
+    int outside = o->kind == RT_QUAD || fx_v3_dot_q32(r->d, ng) <= 0;
+    if (fx_v3_dot_q32(r->d, ng) > 0)
+        ng = fx_v3_neg(ng); /* face the ray */
+    fx_vec3 n = ng;
+#if !defined(RT_NO_BUMP)
+    if (m->bump != 0)
+        n = rt_bump(m, o, p, ng);
+#endif
+    rt_rgb base = m->color;
+#if !defined(RT_NO_TEXTURES)
+    if (m->texture != RT_TEX_NONE)
+        base = rt_texel(m, o, p);
+#endif
+    fx_vec3 p_out = fx_v3_madd(p, ng, RT_EPS);
+    unsigned skip_out = (o->convex && outside) ? oi : NO_SKIP;
+    fx_t wl = fx_sub(fx_sub(FX_ONE, m->reflect), m->transparency);
+    if (wl < 0)
+        wl = 0;
+
+    rt_rgb c = rgb(0, 0, 0);
+    rgb_madd(&c, rgb_mul(base, s->ambient), fx_mul(wl, m->ambient));
+    fx_t kdl = fx_mul(wl, m->diffuse);
+    for (unsigned li = 0; li < s->n_lights; li++) {
+        const rt_light *l = &s->light[li];
+        fx_vec3 lv = fx_v3_sub(l->pos, p);
+        fx_vec3 ld = fx_v3_normalize(lv);
+        fx_t ndl = fx_v3_dotn(n, ld);
+        if (ndl <= 0)
+            continue;
+#if !defined(RT_NO_SHADOWS)
+        if (tr->feat & RT_FEAT_SHADOWS) {
+            rt_ray sr;
+            rt_ray_set(&sr, p_out, ld, tr->feat);
+            RT_COUNT(tr, shadow);
+            if (occluded(tr, &sr, fx_sub(fx_v3_length(lv), RT_EPS),
+                         skip_out))
+                continue;
+        }
+#endif
+        rgb_madd(&c, rgb_mul(base, l->color), fx_mul(kdl, ndl));
+#if !defined(RT_NO_SPECULAR)
+        if (m->specular > 0) {
+            /* R = 2 (n.l) n - l; rv = R.v with v = -d. */
+            fx_vec3 rl = fx_v3_madd(fx_v3_neg(ld), n, 2 * ndl);
+            fx_t rv = fx_neg(fx_v3_dotn(rl, r->d));
+            if (rv > 0)
+                rgb_madd(&c, l->color, fx_mul(m->specular,
+                                              fx_powi(rv, m->shininess)));
+        }
+#endif
+    }
+    if (depth >= tr->max_depth)
+        return c;
+#if !defined(RT_NO_REFLECTION)
+    if (m->reflect > 0) {
+        rt_ray rr;
+        rt_ray_set(&rr, p_out, reflect_dir(r->d, n), tr->feat);
+        RT_COUNT(tr, reflection);
+        rgb_madd(&c, rt_trace(tr, &rr, depth + 1, skip_out), m->reflect);
+    }
+#endif
+#if !defined(RT_NO_REFRACTION)
+    if (m->transparency > 0) {
+        fx_t eta = outside ? m->ior_inv : m->ior;
+        fx_t cosi = fx_neg(fx_v3_dotn(r->d, n));
+        fx_t sin2 = fx_sub(FX_ONE, fx_mul(cosi, cosi));
+        fx_t k = fx_sub(FX_ONE, fx_mul(fx_mul(eta, eta), sin2));
+        rt_ray tr2;
+        if (k < 0) { /* total internal reflection */
+            rt_ray_set(&tr2, p_out, reflect_dir(r->d, n), tr->feat);
+            RT_COUNT(tr, reflection);
+            rgb_madd(&c, rt_trace(tr, &tr2, depth + 1, skip_out),
+                     m->transparency);
+        } else { /* Snell's law */
+            fx_t f = fx_sub(fx_mul(eta, cosi), fx_sqrt(k));
+            fx_vec3 td = fx_v3_normalize(
+                fx_v3_madd(fx_v3_scale(r->d, eta), n, f));
+            unsigned skip_in =
+                (o->convex && (!outside || o->kind == RT_QUAD)) ? oi
+                                                                 : NO_SKIP;
+            rt_ray_set(&tr2, fx_v3_madd(p, ng, -RT_EPS), td, tr->feat);
+            RT_COUNT(tr, refraction);
+            rgb_madd(&c, rt_trace(tr, &tr2, depth + 1, skip_in),
+                     m->transparency);
+        }
+    }
+#endif
+    return c;
+}

@@ -1,0 +1,33 @@
+/* rt_trace: one ray's colour; used by rt_render. Internal to the core. */
+#ifndef RT_TRACE_H
+#define RT_TRACE_H
+
+#include "rt_internal.h"
+
+typedef struct {
+    const rt_scene *scene;
+    unsigned max_depth; /* <= RT_MAX_DEPTH */
+    uint32_t feat;      /* RT_FEAT_* of the scene */
+    rt_stats *stats;    /* may be NULL */
+} rt_tracer;
+
+#if RT_STATS
+#define RT_COUNT(tr, field)                                                   \
+    do {                                                                      \
+        if ((tr)->stats)                                                      \
+            (tr)->stats->field++;                                             \
+    } while (0)
+#else
+#define RT_COUNT(tr, field) ((void)0)
+#endif
+
+/* Sets a ray's origin and unit direction, and what its tests need. */
+void rt_ray_set(rt_ray *r, fx_vec3 o, fx_vec3 d, uint32_t feat);
+
+/* Colour seen along r (unclamped). depth counts bounces so far; skip is an
+ * object index the ray must ignore (0xFFFF for none). Recursion depth is at
+ * most tr->max_depth <= RT_MAX_DEPTH. */
+rt_rgb rt_trace(const rt_tracer *tr, const rt_ray *r, unsigned depth,
+                unsigned skip);
+
+#endif /* RT_TRACE_H */

@@ -1,0 +1,166 @@
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "image_out.h"
+#include "png.h"
+#include "rt_render.h"
+
+struct image_out {
+    int w, h, format, png, to_stdout;
+    uint8_t *rgb;   /* w * h * 3 */
+    char *target;   /* final name */
+    char *tmp;      /* temporary name */
+    FILE *f;
+    char err[200];
+};
+
+static int ends_with(const char *s, const char *suffix)
+{
+    size_t n = strlen(s), m = strlen(suffix);
+    return n >= m && strcmp(s + n - m, suffix) == 0;
+}
+
+image_out *image_out_open(const char *path, int w, int h, int format,
+                          int any_order, char *err, size_t errlen)
+{
+    (void)any_order; /* rows are kept until commit, so any order works */
+    image_out *o = calloc(1, sizeof *o);
+    if (!o) {
+        snprintf(err, errlen, "out of memory");
+        return NULL;
+    }
+    o->w = w;
+    o->h = h;
+    o->format = format;
+    o->png = ends_with(path, ".png") || ends_with(path, ".PNG");
+    o->to_stdout = strcmp(path, "-") == 0;
+    o->rgb = malloc((size_t)w * (size_t)h * 3);
+    if (!o->rgb) {
+        snprintf(err, errlen, "out of memory for a %dx%d image", w, h);
+        free(o);
+        return NULL;
+    }
+    if (o->to_stdout)
+        return o;
+    o->target = strdup(path);
+    o->tmp = malloc(strlen(path) + 16);
+    if (!o->target || !o->tmp) {
+        snprintf(err, errlen, "out of memory");
+        image_out_abort(o);
+        return NULL;
+    }
+    /* The temporary lives in the target's directory so rename() is atomic. */
+    const char *slash = strrchr(path, '/');
+    size_t dirlen = slash ? (size_t)(slash - path) + 1 : 0;
+    memcpy(o->tmp, path, dirlen);
+    strcpy(o->tmp + dirlen, ".fixtrace-XXXXXX");
+    int fd = mkstemp(o->tmp);
+    if (fd < 0) {
+        snprintf(err, errlen, "cannot write '%s': %s%s", path,
+                 strerror(errno),
+                 errno == ENOENT ? " (does its directory exist?)" : "");
+        free(o->tmp);
+        o->tmp = NULL;
+        image_out_abort(o);
+        return NULL;
+    }
+    /* mkstemp makes 0600; give the image the usual umask-based mode. */
+    mode_t mask = umask(0);
+    umask(mask);
+    fchmod(fd, 0666 & ~mask);
+    o->f = fdopen(fd, "wb");
+    if (!o->f) {
+        snprintf(err, errlen, "cannot write '%s': %s", path, strerror(errno));
+        close(fd);
+        image_out_abort(o);
+        return NULL;
+    }
+    return o;
+}
+
+int image_out_row(image_out *o, int y, const uint8_t *row, size_t n)
+{
+    if (y < 0 || y >= o->h)
+        return -1;
+    uint8_t *dst = o->rgb + (size_t)y * (size_t)o->w * 3;
+    if (o->format == RT_RGB888) {
+        if (n != (size_t)o->w * 3)
+            return -1;
+        memcpy(dst, row, n);
+        return 0;
+    }
+    if (n != (size_t)o->w * 2)
+        return -1;
+    /* Expand 5:6:5 back to 8 bits so the result stays viewable. */
+    for (int x = 0; x < o->w; x++) {
+        unsigned v = o->format == RT_RGB565_LE
+                         ? (unsigned)row[2 * x] | (unsigned)row[2 * x + 1] << 8
+                         : (unsigned)row[2 * x] << 8 | (unsigned)row[2 * x + 1];
+        unsigned r = v >> 11, g = (v >> 5) & 63, b = v & 31;
+        dst[3 * x] = (uint8_t)(r << 3 | r >> 2);
+        dst[3 * x + 1] = (uint8_t)(g << 2 | g >> 4);
+        dst[3 * x + 2] = (uint8_t)(b << 3 | b >> 2);
+    }
+    return 0;
+}
+
+static int write_image(image_out *o, FILE *f)
+{
+    if (o->png && !o->to_stdout)
+        return png_write(f, o->rgb, o->w, o->h);
+    if (fprintf(f, "P6\n%d %d\n255\n", o->w, o->h) < 0)
+        return -1;
+    size_t n = (size_t)o->w * (size_t)o->h * 3;
+    return fwrite(o->rgb, 1, n, f) == n ? 0 : -1;
+}
+
+int image_out_commit(image_out *o, char *err, size_t errlen)
+{
+    int rc = 0;
+    if (o->to_stdout) {
+        if (write_image(o, stdout) != 0 || fflush(stdout) != 0) {
+            snprintf(err, errlen, "cannot write the image to stdout: %s",
+                     strerror(errno));
+            rc = -1;
+        }
+        image_out_abort(o);
+        return rc;
+    }
+    if (write_image(o, o->f) != 0 || fflush(o->f) != 0 ||
+        fsync(fileno(o->f)) != 0) {
+        snprintf(err, errlen, "cannot write '%s': %s; the file was not "
+                 "changed", o->target, strerror(errno));
+        image_out_abort(o);
+        return -1;
+    }
+    fclose(o->f);
+    o->f = NULL;
+    if (rename(o->tmp, o->target) != 0) {
+        snprintf(err, errlen, "cannot replace '%s': %s; the file was not "
+                 "changed", o->target, strerror(errno));
+        image_out_abort(o);
+        return -1;
+    }
+    free(o->tmp);
+    o->tmp = NULL;
+    image_out_abort(o);
+    return 0;
+}
+
+void image_out_abort(image_out *o)
+{
+    if (!o)
+        return;
+    if (o->f)
+        fclose(o->f);
+    if (o->tmp)
+        unlink(o->tmp);
+    free(o->tmp);
+    free(o->target);
+    free(o->rgb);
+    free(o);
+}

@@ -1,0 +1,29 @@
+/* image_out: an output image that reaches its final name only when
+ * complete. The temporary file is created at open, beside the target, so a
+ * missing or read-only directory is reported before any rendering. */
+#ifndef IMAGE_OUT_H
+#define IMAGE_OUT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct image_out image_out;
+
+/* Opens an output of w x h pixels whose rows come in `format`
+ * (rt_format). path "-" means stdout (PPM). A name ending in .png writes
+ * PNG, anything else binary PPM (P6). NULL with a message in err. */
+image_out *image_out_open(const char *path, int w, int h, int format,
+                          int any_order, char *err, size_t errlen);
+
+/* Stores row y (rows may come in any order). Returns 0, or -1 on a bad
+ * row. */
+int image_out_row(image_out *o, int y, const uint8_t *row, size_t n);
+
+/* Writes the image, then renames the temporary file into place. Frees o.
+ * Returns 0, or -1 with a message in err (the target is then untouched). */
+int image_out_commit(image_out *o, char *err, size_t errlen);
+
+/* Removes the temporary file and frees o; the target is untouched. */
+void image_out_abort(image_out *o);
+
+#endif /* IMAGE_OUT_H */

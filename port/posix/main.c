@@ -1,0 +1,447 @@
+/*
+ * fixtrace: the host command. Renders a scene file to PPM (or PNG), with
+ * the fixed-point core or the double reference; `fixtrace compare` compares
+ * two images. Output goes to a temporary file that is renamed into place
+ * only when the render succeeded, so a failed or interrupted render never
+ * leaves a half image or harms an existing file.
+ */
+#include <errno.h>
+#include <limits.h>
+#include <pthread.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "cli_util.h"
+#include "compare.h"
+#include "image_out.h"
+#include "ref_render.h"
+#include "rt_parse.h"
+#include "rt_render.h"
+
+#define FIXTRACE_VERSION "0.1.0"
+
+static volatile sig_atomic_t interrupted;
+
+static void on_signal(int sig)
+{
+    (void)sig;
+    interrupted = 1;
+}
+
+typedef rt_status (*render_fn)(const rt_scene *, const rt_options *, int,
+                               int, uint8_t *, rt_row_fn, void *, rt_stats *);
+
+typedef struct {
+    const char *scene_path;
+    const char *out_path;
+    long width, height, spp, depth, jobs;
+    int stats, quiet, reference;
+    const char *format; /* rgb888 (default), rgb565le, rgb565be */
+    int dither;
+} cli;
+
+static void usage(FILE *f)
+{
+    fputs(
+"NAME\n"
+"    fixtrace - a Q16.16 fixed-point ray tracer for microcontrollers\n"
+"\n"
+"SYNOPSIS\n"
+"    fixtrace [options] SCENE\n"
+"    fixtrace compare A.ppm B.ppm [--diff D.ppm] [--min-psnr DB] [--max-bad PCT]\n"
+"\n"
+"DESCRIPTION\n"
+"    Renders the scene file SCENE (see docs/scene-format.md) and writes a\n"
+"    binary PPM, or a PNG when the output name ends in .png. The image is\n"
+"    written to a temporary file beside the output and renamed into place\n"
+"    only when the render succeeds.\n"
+"\n"
+"OPTIONS\n"
+"    -o, --output FILE   output image (default: SCENE's name with .ppm, in\n"
+"                        the current directory); - writes PPM to stdout\n"
+"    -W, --width N       image width, 1..4096 (default: the scene's)\n"
+"    -H, --height N      image height, 1..4096 (default: the scene's)\n"
+"    -s, --spp N         samples per pixel: 1, 4, 9 or 16\n"
+"    -d, --depth N       reflection/refraction depth, 0..RT_MAX_DEPTH (5)\n"
+"    -j, --jobs N        render with N threads, 1..64 (same bytes as -j 1)\n"
+"        --reference     render with the double-precision reference\n"
+"        --stats         print ray counters and timing on stderr\n"
+"        --format F      rows as rgb888 (default), rgb565le or rgb565be;\n"
+"                        565 output is expanded back to a viewable PPM\n"
+"        --dither        ordered dithering for the 565 formats\n"
+"    -q, --quiet         no progress bar, no messages on success\n"
+"    -h, --help          this text\n"
+"        --version       print the version\n"
+"\n"
+"EXIT STATUS\n"
+"    0 on success, 1 on a render or I/O error, 2 on bad usage or a bad\n"
+"    scene, 130 when interrupted.\n"
+"\n"
+"EXAMPLES\n"
+"    fixtrace scenes/seed.scene                  writes seed.ppm\n"
+"    fixtrace -W 640 -H 480 -s 4 -o seed.png scenes/seed.scene\n"
+"    fixtrace --reference -o ref.ppm scenes/seed.scene\n"
+"    fixtrace compare seed.ppm ref.ppm --diff diff.ppm --min-psnr 40\n",
+        f);
+}
+
+/* Default output: the scene's base name with .ppm, in the current
+ * directory. */
+static char *default_output(const char *scene)
+{
+    const char *base = strrchr(scene, '/');
+    base = base ? base + 1 : scene;
+    size_t n = strlen(base);
+    const char *dot = strrchr(base, '.');
+    if (dot && dot != base)
+        n = (size_t)(dot - base);
+    char *out = malloc(n + 5);
+    if (!out)
+        return NULL;
+    memcpy(out, base, n);
+    memcpy(out + n, ".ppm", 5);
+    return out;
+}
+
+static int parse_args(int argc, char **argv, cli *c)
+{
+    memset(c, 0, sizeof *c);
+    c->jobs = 1;
+    c->format = "rgb888";
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *val = NULL;
+#define TAKE(shortopt, longopt)                                               \
+    ((strcmp(a, shortopt) == 0 || strcmp(a, longopt) == 0) &&                 \
+     (val = cli_value(argc, argv, &i, a)) != NULL)
+        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
+            usage(stdout);
+            exit(0);
+        } else if (strcmp(a, "--version") == 0) {
+            printf("fixtrace %s (Q16.16, RT_MAX_DEPTH %d, RT_MAX_OBJECTS %d)\n",
+                   FIXTRACE_VERSION, RT_MAX_DEPTH, RT_MAX_OBJECTS);
+            exit(0);
+        } else if (TAKE("-o", "--output")) {
+            if (c->out_path)
+                return cli_error("option %s given twice", a);
+            if (!*val)
+                return cli_error("%s needs a file name", a);
+            c->out_path = val;
+        } else if (TAKE("-W", "--width")) {
+            if (cli_long(a, val, 1, RT_MAX_WIDTH, &c->width))
+                return 2;
+        } else if (TAKE("-H", "--height")) {
+            if (cli_long(a, val, 1, RT_MAX_HEIGHT, &c->height))
+                return 2;
+        } else if (TAKE("-s", "--spp")) {
+            if (cli_long(a, val, 1, 16, &c->spp))
+                return 2;
+            if (c->spp != 1 && c->spp != 4 && c->spp != 9 && c->spp != 16)
+                return cli_error("%s must be 1, 4, 9 or 16 (got %s)", a, val);
+        } else if (TAKE("-d", "--depth")) {
+            if (cli_long(a, val, 0, RT_MAX_DEPTH, &c->depth))
+                return 2;
+            c->depth++; /* stored +1 so 0 means "scene default" */
+        } else if (TAKE("-j", "--jobs")) {
+            if (cli_long(a, val, 1, 64, &c->jobs))
+                return 2;
+        } else if (strcmp(a, "--format") == 0 &&
+                   (val = cli_value(argc, argv, &i, a)) != NULL) {
+            if (strcmp(val, "rgb888") && strcmp(val, "rgb565le") &&
+                strcmp(val, "rgb565be"))
+                return cli_error("--format must be rgb888, rgb565le or "
+                                 "rgb565be (got '%s')", val);
+            c->format = val;
+        } else if (strcmp(a, "--dither") == 0) {
+            c->dither = 1;
+        } else if (strcmp(a, "--stats") == 0) {
+            c->stats = 1;
+        } else if (strcmp(a, "-q") == 0 || strcmp(a, "--quiet") == 0) {
+            c->quiet = 1;
+        } else if (strcmp(a, "--reference") == 0) {
+            c->reference = 1;
+        } else if (a[0] == '-' && a[1] != '\0') {
+            if (cli_needs_value(a))
+                return 2; /* cli_value already said what was missing */
+            return cli_error("unknown option '%s' (see fixtrace --help)", a);
+        } else {
+            if (c->scene_path)
+                return cli_error("more than one scene given ('%s' and '%s')",
+                                 c->scene_path, a);
+            c->scene_path = a;
+        }
+#undef TAKE
+    }
+    if (!c->scene_path)
+        return cli_error("no scene file given (try: fixtrace "
+                         "scenes/seed.scene, or fixtrace --help)");
+    if (c->dither && strcmp(c->format, "rgb888") == 0)
+        return cli_error("--dither needs --format rgb565le or rgb565be");
+    return 0;
+}
+
+/* Shared render state for the row callbacks and threads. */
+typedef struct {
+    const rt_scene *scene;
+    rt_options opt;
+    render_fn render;
+    image_out *out;
+    int progress;
+    int rows_done;
+    struct timespec start;
+    uint64_t rays_so_far;
+    pthread_mutex_t lock;
+    int next_row;
+    rt_status status;
+    rt_stats stats;
+} job;
+
+static double seconds_since(const struct timespec *t0)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)(t.tv_sec - t0->tv_sec) +
+           (double)(t.tv_nsec - t0->tv_nsec) * 1e-9;
+}
+
+static void show_progress(job *j, int final)
+{
+    static double last;
+    double el = seconds_since(&j->start);
+    if (!final && el - last < 0.1)
+        return;
+    last = el;
+    int h = j->opt.height, done = j->rows_done;
+    int bar = 30, fill = h ? done * bar / h : bar;
+    double rate = el > 0 ? (double)j->rays_so_far / el : 0;
+    double left = done > 0 ? el * (h - done) / done : 0;
+    fprintf(stderr, "\r[%.*s%*s] %3d%% rows %d/%d  %.2f Mrays/s  %s %.1fs ",
+            fill, "##############################", bar - fill, "",
+            h ? done * 100 / h : 100, done, h, rate / 1e6,
+            final ? "took" : "left", final ? el : left);
+    if (final)
+        fputc('\n', stderr);
+}
+
+static int on_row(void *ctx, int y, const uint8_t *row, size_t n)
+{
+    job *j = ctx;
+    int rc;
+    pthread_mutex_lock(&j->lock);
+    rc = image_out_row(j->out, y, row, n);
+    j->rows_done++;
+    if (j->progress)
+        show_progress(j, 0);
+    pthread_mutex_unlock(&j->lock);
+    return rc != 0 || interrupted;
+}
+
+static void add_stats(rt_stats *a, const rt_stats *b)
+{
+    a->primary += b->primary;
+    a->shadow += b->shadow;
+    a->reflection += b->reflection;
+    a->refraction += b->refraction;
+    a->tests += b->tests;
+}
+
+/* Worker: takes rows one at a time, so threads balance and every row is
+ * rendered exactly as with one thread. */
+static void *worker(void *arg)
+{
+    job *j = arg;
+    size_t nbytes = rt_row_bytes(&j->opt);
+    uint8_t *row = malloc(nbytes);
+    rt_stats st;
+    memset(&st, 0, sizeof st);
+    if (!row) {
+        pthread_mutex_lock(&j->lock);
+        j->status = RT_ERR_ARG;
+        pthread_mutex_unlock(&j->lock);
+        return NULL;
+    }
+    for (;;) {
+        pthread_mutex_lock(&j->lock);
+        int y = j->status == RT_OK ? j->next_row++ : j->opt.height;
+        j->rays_so_far = j->stats.primary + j->stats.shadow +
+                         j->stats.reflection + j->stats.refraction;
+        pthread_mutex_unlock(&j->lock);
+        if (y >= j->opt.height)
+            break;
+        rt_stats row_st;
+        memset(&row_st, 0, sizeof row_st);
+        rt_status rc = j->render(j->scene, &j->opt, y, y + 1, row, on_row, j,
+                                 &row_st);
+        pthread_mutex_lock(&j->lock);
+        add_stats(&j->stats, &row_st);
+        if (rc != RT_OK && j->status == RT_OK)
+            j->status = rc;
+        pthread_mutex_unlock(&j->lock);
+    }
+    free(row);
+    return NULL;
+}
+
+static const char *status_text(rt_status st)
+{
+    switch (st) {
+    case RT_ERR_ARG:
+        return "bad render options";
+    case RT_ERR_UNSUPPORTED:
+        return "the scene needs an effect this build removed";
+    case RT_ERR_ABORTED:
+        return "the output could not take a row";
+    default:
+        return "render error";
+    }
+}
+
+static int render_scene(const cli *c, const rt_scene *scene)
+{
+    job j;
+    memset(&j, 0, sizeof j);
+    j.scene = scene;
+    rt_options_from_scene(&j.opt, scene);
+    if (c->width)
+        j.opt.width = (uint16_t)c->width;
+    if (c->height)
+        j.opt.height = (uint16_t)c->height;
+    if (c->spp)
+        j.opt.spp = (uint8_t)c->spp;
+    if (c->depth)
+        j.opt.depth = (uint8_t)(c->depth - 1);
+    j.opt.format = strcmp(c->format, "rgb565le") == 0   ? RT_RGB565_LE
+                   : strcmp(c->format, "rgb565be") == 0 ? RT_RGB565_BE
+                                                        : RT_RGB888;
+    j.opt.dither = (uint8_t)c->dither;
+    j.render = c->reference ? ref_render_rows : rt_render_rows;
+    j.progress = !c->quiet && isatty(STDERR_FILENO);
+    pthread_mutex_init(&j.lock, NULL);
+
+    uint32_t missing = rt_scene_features(scene, j.opt.spp) &
+                       ~rt_build_features();
+    if (missing && !c->reference) {
+        fprintf(stderr, "fixtrace: %s: this build cannot render the "
+                "scene's %s (it was built without it)\n", c->scene_path,
+                rt_feature_name(missing & (0u - missing)));
+        return 1;
+    }
+
+    char err[256];
+    char *out_path = c->out_path ? NULL : default_output(c->scene_path);
+    const char *path = c->out_path ? c->out_path : out_path;
+    if (!path) {
+        fprintf(stderr, "fixtrace: out of memory\n");
+        return 1;
+    }
+    j.out = image_out_open(path, j.opt.width, j.opt.height, j.opt.format,
+                           c->jobs > 1, err, sizeof err);
+    if (!j.out) {
+        fprintf(stderr, "fixtrace: %s\n", err);
+        free(out_path);
+        return 1;
+    }
+    clock_gettime(CLOCK_MONOTONIC, &j.start);
+    j.status = RT_OK;
+    if (c->jobs <= 1) {
+        worker(&j);
+    } else {
+        pthread_t th[64];
+        long started = 0;
+        for (long t = 0; t < c->jobs; t++) {
+            if (pthread_create(&th[t], NULL, worker, &j) != 0)
+                break;
+            started++;
+        }
+        if (started == 0)
+            worker(&j);
+        for (long t = 0; t < started; t++)
+            pthread_join(th[t], NULL);
+    }
+    double secs = seconds_since(&j.start);
+    if (j.progress && j.status == RT_OK)
+        show_progress(&j, 1);
+    else if (j.progress)
+        fputc('\n', stderr);
+
+    int rc = 0;
+    if (j.status != RT_OK || interrupted) {
+        image_out_abort(j.out);
+        if (interrupted) {
+            fprintf(stderr, "fixtrace: interrupted; %s was not written\n",
+                    path);
+            rc = 130;
+        } else {
+            fprintf(stderr, "fixtrace: render failed (%s); %s was not "
+                    "written\n", status_text(j.status), path);
+            rc = 1;
+        }
+    } else if (image_out_commit(j.out, err, sizeof err) != 0) {
+        fprintf(stderr, "fixtrace: %s\n", err);
+        rc = 1;
+    } else if (!c->quiet && strcmp(path, "-") != 0) {
+        fprintf(stderr, "fixtrace: wrote %s (%dx%d, %d spp%s)\n", path,
+                j.opt.width, j.opt.height, j.opt.spp,
+                c->reference ? ", reference" : "");
+    }
+    if (c->stats) {
+        fprintf(stderr, "pixels %lu\n",
+                (unsigned long)j.opt.width * j.opt.height);
+        fprintf(stderr, "primary_rays %llu\n",
+                (unsigned long long)j.stats.primary);
+        fprintf(stderr, "shadow_rays %llu\n",
+                (unsigned long long)j.stats.shadow);
+        fprintf(stderr, "reflection_rays %llu\n",
+                (unsigned long long)j.stats.reflection);
+        fprintf(stderr, "refraction_rays %llu\n",
+                (unsigned long long)j.stats.refraction);
+        fprintf(stderr, "intersection_tests %llu\n",
+                (unsigned long long)j.stats.tests);
+        fprintf(stderr, "render_seconds %.6f\n", secs);
+    }
+    pthread_mutex_destroy(&j.lock);
+    free(out_path);
+    return rc;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc > 1 && strcmp(argv[1], "compare") == 0)
+        return compare_main(argc - 1, argv + 1);
+
+    cli c;
+    int rc = parse_args(argc, argv, &c);
+    if (rc)
+        return rc;
+
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    sigaction(SIGHUP, &sa, NULL);
+    signal(SIGPIPE, SIG_IGN);
+
+    size_t len;
+    char err[256];
+    char *text = cli_read_file(c.scene_path, &len, err, sizeof err);
+    if (!text) {
+        fprintf(stderr, "fixtrace: %s\n", err);
+        return 2;
+    }
+    static rt_scene scene;
+    rt_parse_error pe;
+    rt_status st = rt_parse(text, len, &scene, &pe);
+    if (st != RT_OK) {
+        cli_print_parse_error(stderr, c.scene_path, text, len, &pe);
+        free(text);
+        return 2;
+    }
+    free(text);
+    return render_scene(&c, &scene);
+}

@@ -1,0 +1,21 @@
+/* png: a minimal PNG encoder (RGB, 8 bits, stored deflate blocks, CRC-32
+ * and Adler-32), so the host tool writes pictures browsers show without
+ * any external package. */
+#ifndef PNG_H
+#define PNG_H
+
+#include <stdint.h>
+#include <stdio.h>
+
+/* Writes w x h RGB888 pixels as a PNG to f. Returns 0, or -1 on a write
+ * error. */
+int png_write(FILE *f, const uint8_t *rgb, int w, int h);
+
+/* CRC-32 (ISO 3309, as PNG uses) of n bytes, continuing from crc (start
+ * with 0). */
+uint32_t png_crc32(uint32_t crc, const uint8_t *p, size_t n);
+
+/* Adler-32 of n bytes, continuing from a (start with 1). */
+uint32_t png_adler32(uint32_t a, const uint8_t *p, size_t n);
+
+#endif /* PNG_H */
