@@ -24,7 +24,8 @@ typedef struct {
     uint8_t dither;         /* RGB565 only: 1 = ordered 4x4 dither */
 } rt_options;
 
-/* Ray and test counters. Each field counts events; all zero at start. */
+/* Ray and test counters. The renderer adds to them and never resets them,
+ * so a caller can sum several calls; zero them before the first. */
 typedef struct {
     uint64_t primary;    /* camera rays */
     uint64_t shadow;     /* shadow rays */

@@ -1,5 +1,5 @@
 /* rt_scene: scene defaults and the per-object constants the tracer uses. */
-#include <string.h>
+#include "rt_libc.h"
 #include "rt_internal.h"
 
 /* Largest cone slope r / h: flatter cones lose the unit-frame precision
@@ -66,7 +66,7 @@ static rt_status upright_bounds(rt_object *o)
     o->br = fx_add(fx_v3_length(fx_v3(o->r, hh, 0)), 1);
     while (k < 15 && ((int64_t)o->br >> k) > FX_ONE)
         k++;
-    while (k > -15 && ((int64_t)o->br << -k) <= FX_HALF)
+    while (k <= 0 && k > -15 && ((int64_t)o->br << -k) <= FX_HALF)
         k--;
     o->ushift = (int8_t)k;
     o->ur = scale_pow2(o->r, k);
