@@ -31,7 +31,9 @@ CORE_HDR := $(sort $(wildcard core/*.h))
 include mk/posix.mk
 include mk/test.mk
 -include mk/firmware.mk
--include mk/tools.mk
+-include mk/fuzz.mk
+-include mk/lint.mk
+-include mk/bench.mk
 
 .PHONY: all clean print-%
 all: $(FIXTRACE)
