@@ -27,3 +27,8 @@ test-build: $(FIXTRACE) $(TEST_BIN)
 test: test-build
 	$(Q)HOST_BUILD=$(HOST_BUILD) SANITIZE=$(SANITIZE) MAKE="$(MAKE)" \
 	    bash tests/run.sh
+
+.PHONY: update-checksums
+# Re-records the end-to-end render checksums after an intended image change.
+update-checksums: $(HOST_BUILD)/tests/test_render
+	UPDATE_CHECKSUMS=1 $(HOST_BUILD)/tests/test_render

@@ -1,0 +1,153 @@
+#!/usr/bin/env bash
+# The host command as a user meets it: every bad argument and bad scene gets
+# a clear message and the right exit status, a failed or interrupted render
+# leaves an existing output untouched and no temporary file behind, and
+# good renders are byte-identical however they are made (-j, stdout, PNG).
+set -u
+cd "$(dirname "$0")/.."
+FT=${FIXTRACE:-build/posix/fixtrace}
+pass=0 fail=0 skip=0
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+SEED=scenes/seed.scene
+
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAILED: $*"; }
+
+# expect STATUS PATTERN -- command...: exit status and a stderr match.
+expect() {
+    local want=$1 pat=$2; shift 3
+    "$@" >"$tmp/out" 2>"$tmp/err"
+    local rc=$?
+    if [ "$rc" -ne "$want" ]; then
+        bad "'$*' exited $rc, want $want; stderr: $(head -c 300 "$tmp/err")"
+    elif ! grep -qE -- "$pat" "$tmp/err" "$tmp/out"; then
+        bad "'$*' said: $(head -c 300 "$tmp/err"), want /$pat/"
+    else
+        ok
+    fi
+}
+
+# --- usage ------------------------------------------------------------
+expect 0 'SYNOPSIS' -- "$FT" --help
+expect 0 'EXAMPLES' -- "$FT" -h
+expect 0 '^fixtrace [0-9]' -- "$FT" --version
+expect 2 'no scene file given' -- "$FT"
+expect 2 'unknown option' -- "$FT" --bogus "$SEED"
+expect 2 'more than one scene' -- "$FT" "$SEED" "$SEED"
+expect 2 'cannot open scene' -- "$FT" -o "$tmp/x.ppm" "$tmp/missing.scene"
+expect 2 'given twice' -- "$FT" -o a.ppm -o b.ppm "$SEED"
+expect 2 'needs a file name' -- "$FT" -o '' "$SEED"
+expect 2 '--dither needs' -- "$FT" --dither -o "$tmp/x.ppm" "$SEED"
+expect 2 'format must be' -- "$FT" --format rgb999 "$SEED"
+for opt in -W --width -H --height -s --spp -d --depth -j --jobs -o --output --format; do
+    expect 2 "needs a value" -- "$FT" "$SEED" "$opt"
+done
+for opt in -W -H; do
+    for v in 0 -1 4097 99999999999999999999 abc 1.5 '' ' 8'; do
+        expect 2 "$opt (needs a whole number|must be from)" -- "$FT" "$opt" "$v" "$SEED"
+    done
+done
+for v in 0 2 3 17 -4 x; do
+    expect 2 '(-s must be|needs a whole number|must be from)' -- "$FT" -s "$v" "$SEED"
+done
+for v in -1 6 100 x; do
+    expect 2 '(-d must be from|needs a whole number)' -- "$FT" -d "$v" "$SEED"
+done
+for v in 0 65 -2 y; do
+    expect 2 '(-j must be from|needs a whole number)' -- "$FT" -j "$v" "$SEED"
+done
+
+# --- output safety ------------------------------------------------------
+echo "precious" >"$tmp/keep.ppm"
+expect 1 'does its directory exist' -- "$FT" -q -W 8 -H 8 -o "$tmp/nodir/x.ppm" "$SEED"
+[ ! -e "$tmp/nodir" ] && ok || bad "a missing output directory was created"
+mkdir "$tmp/ro" && chmod 555 "$tmp/ro"
+if [ "$(id -u)" != 0 ]; then
+    expect 1 'cannot write' -- "$FT" -q -W 8 -H 8 -o "$tmp/ro/x.ppm" "$SEED"
+else
+    ok # root writes anywhere; the missing-directory case covers the path
+fi
+printf 'camera eye 0 0 -5 look 0 0 0 up 0 1 0 fov 60\nsphere center 0 0 0 radius 1 material nope\n' >"$tmp/bad.scene"
+expect 2 'bad.scene:2:[0-9]+: error: .*nope' -- "$FT" -q -o "$tmp/keep.ppm" "$tmp/bad.scene"
+[ "$(cat "$tmp/keep.ppm")" = precious ] && ok || bad "a failed render changed the existing output"
+ls -a "$tmp" | grep -q '^\.fixtrace-' && bad "a temporary file was left behind" || ok
+
+# SIGINT during a long render: the old file stays, no temporary is left.
+"$FT" -q -W 2000 -H 2000 -s 16 -o "$tmp/keep.ppm" "$SEED" 2>"$tmp/int.err" &
+pid=$!
+sleep 1
+kill -INT $pid
+wait $pid
+rc=$?
+[ $rc -eq 130 ] && ok || bad "SIGINT exit status $rc, want 130"
+grep -q 'interrupted' "$tmp/int.err" && ok || bad "no 'interrupted' message: $(cat "$tmp/int.err")"
+[ "$(cat "$tmp/keep.ppm")" = precious ] && ok || bad "SIGINT changed the existing output"
+ls -a "$tmp" | grep -q '^\.fixtrace-' && bad "SIGINT left a temporary file" || ok
+
+# --- good renders -------------------------------------------------------
+expect 0 'wrote' -- "$FT" -W 40 -H 30 -o "$tmp/a.ppm" "$SEED"
+head -c 2 "$tmp/a.ppm" | grep -q P6 && ok || bad "output is not a P6 PPM"
+[ "$(stat -c %s "$tmp/a.ppm")" -eq $((40 * 30 * 3 + 13)) ] && ok || bad "PPM size wrong"
+expect 0 '' -- "$FT" -q -j 2 -W 40 -H 30 -o "$tmp/b.ppm" "$SEED"
+cmp -s "$tmp/a.ppm" "$tmp/b.ppm" && ok || bad "-j 2 differs from -j 1"
+"$FT" -q -W 40 -H 30 -o - "$SEED" >"$tmp/c.ppm" && cmp -s "$tmp/a.ppm" "$tmp/c.ppm" && ok || bad "-o - differs"
+expect 0 '' -- "$FT" -q -W 40 -H 30 -o "$tmp/keep.ppm" "$SEED"
+cmp -s "$tmp/a.ppm" "$tmp/keep.ppm" && ok || bad "a good render did not replace the old file"
+expect 0 '^primary_rays 1200$' -- "$FT" -q --stats -W 40 -H 30 -o "$tmp/s.ppm" "$SEED"
+for k in shadow_rays reflection_rays refraction_rays intersection_tests render_seconds pixels; do
+    grep -q "^$k " "$tmp/err" && ok || bad "--stats lacks $k"
+done
+expect 0 '' -- "$FT" -q -W 40 -H 30 -o "$tmp/a.png" "$SEED"
+head -c 8 "$tmp/a.png" | od -An -tx1 | grep -q '89 50 4e 47 0d 0a 1a 0a' && ok || bad "PNG signature"
+if command -v pngtopnm >/dev/null; then
+    pngtopnm "$tmp/a.png" >"$tmp/a2.ppm" 2>/dev/null
+    # netpbm writes "P6\n40 30\n255\n" as we do.
+    cmp -s "$tmp/a.ppm" "$tmp/a2.ppm" && ok || bad "PNG decoded by pngtopnm differs from the PPM"
+else
+    echo "SKIPPED: PNG decode check (pngtopnm missing; install netpbm)"
+    skip=$((skip + 1))
+fi
+expect 0 '' -- "$FT" -q --format rgb565le --dither -W 40 -H 30 -o "$tmp/d.ppm" "$SEED"
+
+# --- bad scenes (file:line:col and the line) -----------------------------
+scene_case() { # name, expected message regex, scene text
+    printf '%b' "$3" >"$tmp/$1.scene"
+    expect 2 "$1.scene:[0-9]+:[0-9]+: error: .*$2" -- "$FT" -q -o "$tmp/$1.ppm" "$tmp/$1.scene"
+    [ ! -e "$tmp/$1.ppm" ] && ok || bad "$1: an output file was written"
+}
+CAM='camera eye 0 0 -5 look 0 0 0 up 0 1 0 fov 60\n'
+MAT='material m color 1 1 1\n'
+scene_case unknown_kw 'unknown' "${CAM}sphre center 0 0 0 radius 1\n"
+scene_case undefined_mat 'not defined' "${CAM}sphere center 0 0 0 radius 1 material m\n"
+scene_case dup_mat 'm' "${CAM}${MAT}${MAT}"
+scene_case big_number 'range' "${CAM}${MAT}sphere center 40000 0 0 radius 1 material m\n"
+scene_case nan_number '' "${CAM}${MAT}sphere center nan 0 0 radius 1 material m\n"
+scene_case inf_number '' "${CAM}${MAT}sphere center 0 inf 0 radius 1 material m\n"
+scene_case many_digits 'digits' "${CAM}${MAT}sphere center 0.1234567890123456789012345678901234567890123 0 0 radius 1 material m\n"
+scene_case missing_radius 'radius' "${CAM}${MAT}sphere center 0 0 0 material m\n"
+scene_case nul_byte '' "${CAM}${MAT}sphere center 0 0\0 0 radius 1 material m\n"
+scene_case zero_radius '' "${CAM}${MAT}sphere center 0 0 0 radius 0 material m\n"
+head -c 3000 /dev/urandom | tr -d '\n' >"$tmp/garbage.scene"
+expect 2 'garbage.scene:1:[0-9]+: error' -- "$FT" -q -o "$tmp/g.ppm" "$tmp/garbage.scene"
+: >"$tmp/empty.scene"
+"$FT" -q -W 8 -H 8 -o "$tmp/e.ppm" "$tmp/empty.scene" 2>"$tmp/err"
+rc=$?
+{ [ $rc -eq 0 ] || grep -q 'empty.scene:' "$tmp/err"; } && ok || bad "empty scene: status $rc, $(cat "$tmp/err")"
+objs=""
+for i in $(seq 1 300); do objs="${objs}sphere center $i 0 0 radius 0.5 material m\n"; done
+scene_case too_many 'RT_MAX_OBJECTS' "${CAM}${MAT}${objs}"
+lights=""
+for i in $(seq 1 10); do lights="${lights}light $i 5 0\n"; done
+scene_case too_many_lights 'RT_MAX_LIGHTS' "${CAM}${lights}"
+# A 100 MB file is refused by size before it is parsed.
+truncate -s 100M "$tmp/huge.scene"
+expect 2 'larger than' -- "$FT" -q -o "$tmp/h.ppm" "$tmp/huge.scene"
+rm -f "$tmp/huge.scene"
+
+if [ $skip -gt 0 ]; then
+    echo "$pass passed, $fail failed, $skip skipped"
+else
+    echo "$pass passed, $fail failed"
+fi
+[ $fail -eq 0 ]

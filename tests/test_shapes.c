@@ -1,0 +1,227 @@
+/*
+ * Each primitive's intersection and normal in the fixed-point core against
+ * closed-form double answers: hit, miss, from inside, tangent, behind the
+ * origin. Then random rays at every primitive, where the core's hit/miss
+ * must agree with double except within a hair of the silhouette, and t
+ * within a stated tolerance.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "harness.h"
+#include "rt_internal.h"
+
+#define D2F(x) ((fx_t)lround((x) * 65536.0))
+#define F2D(x) ((double)(x) / 65536.0)
+
+static rt_object make(int kind, double ax, double ay, double az, double r,
+                      double h)
+{
+    rt_object o;
+    memset(&o, 0, sizeof o);
+    o.kind = (uint8_t)kind;
+    o.a = fx_v3(D2F(ax), D2F(ay), D2F(az));
+    o.r = D2F(r);
+    o.h = D2F(h);
+    o.caps = RT_CAP_BOTTOM | RT_CAP_TOP;
+    return o;
+}
+
+static rt_ray ray(double ox, double oy, double oz, double dx, double dy,
+                  double dz)
+{
+    rt_ray r;
+    double l = sqrt(dx * dx + dy * dy + dz * dz);
+    r.o = fx_v3(D2F(ox), D2F(oy), D2F(oz));
+    r.d = fx_v3(D2F(dx / l), D2F(dy / l), D2F(dz / l));
+    r.inv = fx_v3(fx_recip(r.d.x), fx_recip(r.d.y), fx_recip(r.d.z));
+    return r;
+}
+
+/* Hits at t_want (within tol world units) with outward normal n_want. */
+static void expect_hit(const rt_object *o, rt_ray r, double t_want,
+                       double nx, double ny, double nz, double tol,
+                       int line)
+{
+    fx_t t;
+    uint8_t part;
+    int hit = rt_intersect(o, &r, RT_EPS, FX_MAX, &t, &part);
+    if (!th_check(hit, __FILE__, line, "expected a hit"))
+        return;
+    if (!th_check(fabs(F2D(t) - t_want) <= tol, __FILE__, line,
+                  "hit distance"))
+        printf("    t = %.6f, want %.6f\n", F2D(t), t_want);
+    fx_vec3 p = fx_v3_madd(r.o, r.d, t);
+    fx_vec3 n = rt_normal(o, p, part);
+    double err = fabs(F2D(n.x) - nx) + fabs(F2D(n.y) - ny) +
+                 fabs(F2D(n.z) - nz);
+    if (!th_check(err < 1e-3, __FILE__, line, "normal"))
+        printf("    n = (%.4f %.4f %.4f), want (%.4f %.4f %.4f)\n",
+               F2D(n.x), F2D(n.y), F2D(n.z), nx, ny, nz);
+}
+
+static void expect_miss(const rt_object *o, rt_ray r, int line)
+{
+    fx_t t;
+    uint8_t part;
+    th_check(!rt_intersect(o, &r, RT_EPS, FX_MAX, &t, &part), __FILE__, line,
+             "expected a miss");
+}
+
+#define HIT(o, r, t, nx, ny, nz) expect_hit(&(o), r, t, nx, ny, nz, 1e-3, __LINE__)
+#define MISS(o, r) expect_miss(&(o), r, __LINE__)
+
+static void sphere_cases(void)
+{
+    rt_object s = make(RT_SPHERE, 0, 0, 5, 1, 0);
+    CHECK_EQ(rt_object_prepare(&s), RT_OK);
+    HIT(s, ray(0, 0, 0, 0, 0, 1), 4, 0, 0, -1);               /* hit */
+    MISS(s, ray(0, 2, 0, 0, 0, 1));                           /* miss */
+    HIT(s, ray(0, 0, 5, 0, 1, 0), 1, 0, 1, 0);                /* inside */
+    MISS(s, ray(0, 0, 10, 0, 0, 1));                          /* behind */
+    HIT(s, ray(0, 0.9999, 0, 0, 0, 1), 5 - sqrt(1 - 0.9999 * 0.9999),
+        0, 0.9999, -sqrt(1 - 0.9999 * 0.9999));               /* near tangent */
+    MISS(s, ray(0, 1.0001, 0, 0, 0, 1));                      /* past tangent */
+    /* Far sphere: 20000 units away, radius 100. */
+    rt_object f = make(RT_SPHERE, 0, 0, 20000, 100, 0);
+    CHECK_EQ(rt_object_prepare(&f), RT_OK);
+    HIT(f, ray(0, 0, 0, 0, 0, 1), 19900, 0, 0, -1);
+    /* Tiny sphere: radius 1/256. */
+    rt_object tiny = make(RT_SPHERE, 0, 0, 1, 1.0 / 256, 0);
+    CHECK_EQ(rt_object_prepare(&tiny), RT_OK);
+    HIT(tiny, ray(0, 0, 0, 0, 0, 1), 1 - 1.0 / 256, 0, 0, -1);
+}
+
+static void quad_cases(void)
+{
+    rt_object q = make(RT_QUAD, -1, 0, -1, 0, 0);
+    q.b = fx_v3(0, 0, D2F(2));   /* edge1 along +z */
+    q.c = fx_v3(D2F(2), 0, 0);   /* edge2 along +x: normal +y */
+    CHECK_EQ(rt_object_prepare(&q), RT_OK);
+    HIT(q, ray(0, 3, 0, 0, -1, 0), 3, 0, 1, 0);
+    HIT(q, ray(0.5, -2, 0.5, 0, 1, 0), 2, 0, 1, 0); /* from below */
+    MISS(q, ray(1.5, 3, 0, 0, -1, 0));              /* beside */
+    MISS(q, ray(0, 3, 0, 0, 1, 0));                 /* behind */
+    MISS(q, ray(-5, 0, 0, 1, 0, 0));                /* in the plane */
+    HIT(q, ray(-5, 0.01, 0, 1, -0.002, 0), 5.0 * sqrt(1 + 0.002 * 0.002),
+        0, 1, 0);                                  /* grazing */
+    rt_object bad = make(RT_QUAD, 0, 0, 0, 0, 0);
+    bad.b = fx_v3(FX_ONE, 0, 0);
+    bad.c = fx_v3(2 * FX_ONE, 0, 0);
+    CHECK_EQ(rt_object_prepare(&bad), RT_ERR_DEGENERATE);
+}
+
+static void box_cases(void)
+{
+    rt_object b = make(RT_BOX, -1, -1, -1, 0, 0);
+    b.b = fx_v3(FX_ONE, FX_ONE, FX_ONE);
+    CHECK_EQ(rt_object_prepare(&b), RT_OK);
+    HIT(b, ray(0, 0, -5, 0, 0, 1), 4, 0, 0, -1);
+    HIT(b, ray(5, 0.5, 0.5, -1, 0, 0), 4, 1, 0, 0);
+    HIT(b, ray(0, 0, 0, 0, 1, 0), 1, 0, 1, 0);   /* inside */
+    MISS(b, ray(0, 2, -5, 0, 0, 1));
+    MISS(b, ray(0, 0, 5, 0, 0, 1));              /* behind */
+    HIT(b, ray(0, 0.999, -5, 0, 0, 1), 4, 0, 0, -1); /* near an edge */
+    rt_object flat = make(RT_BOX, 0, 0, 0, 0, 0);
+    flat.b = fx_v3(FX_ONE, 0, FX_ONE);
+    CHECK_EQ(rt_object_prepare(&flat), RT_ERR_DEGENERATE);
+}
+
+static void cylinder_cases(void)
+{
+    rt_object c = make(RT_CYLINDER, 0, 0, 0, 1, 2);
+    CHECK_EQ(rt_object_prepare(&c), RT_OK);
+    HIT(c, ray(0, 1, -5, 0, 0, 1), 4, 0, 0, -1);          /* side */
+    HIT(c, ray(0, 5, 0, 0, -1, 0), 3, 0, 1, 0);           /* top cap */
+    HIT(c, ray(0.5, -3, 0, 0, 1, 0), 3, 0, -1, 0);        /* bottom cap */
+    HIT(c, ray(0, 1, 0, 1, 0, 0), 1, 1, 0, 0);            /* inside */
+    MISS(c, ray(0, 3, -5, 0, 0, 1));                      /* above */
+    MISS(c, ray(0, 1, 5, 0, 0, 1));                       /* behind */
+    MISS(c, ray(1.001, 1, -5, 0, 0, 1));                  /* past tangent */
+    rt_object open = c;
+    open.caps = 0;
+    CHECK_EQ(rt_object_prepare(&open), RT_OK);
+    CHECK_EQ(open.convex, 0);
+    MISS(open, ray(0, 5, 0, 0, -1, 0)); /* down the open axis */
+    /* In through the open top, out to the inner wall at x = 1. */
+    HIT(open, ray(0, 2.5, 0, 1, -1, 0), sqrt(2), 1, 0, 0);
+}
+
+static void cone_cases(void)
+{
+    rt_object k = make(RT_CONE, 0, 0, 0, 1, 2);
+    CHECK_EQ(rt_object_prepare(&k), RT_OK);
+    /* At y = 1 the radius is 0.5; normal (1, 0.5, 0)/|.| on the -z side. */
+    double s = 1 / sqrt(1.25);
+    HIT(k, ray(0, 1, -5, 0, 0, 1), 4.5, 0, 0.5 * s, -s);
+    HIT(k, ray(0, -3, 0, 0, 1, 0), 3, 0, -1, 0);          /* base cap */
+    MISS(k, ray(0, 2.5, -5, 0, 0, 1));                    /* above apex */
+    MISS(k, ray(0.6, 1, -5, 0, 0, 1));                    /* outside */
+    HIT(k, ray(0, 0.5, 0, 0, 0, 1), 0.75, 0, 0.5 * s, s); /* inside */
+}
+
+/* Random rays: hit/miss agrees with the sphere's double answer away from
+ * the silhouette, and the hit point lies on the side facing the ray within
+ * 2^-13 + 2^-15 t of the surface. The t-proportional part is the unit
+ * direction's own quantisation (|d| = 1 +- 2^-16), not the intersection. */
+static void random_spheres(void)
+{
+    uint32_t x = 12345;
+    int bad_t = 0, bad_hit = 0, n = 0;
+    for (int i = 0; i < 200000; i++) {
+        x ^= x << 13; x ^= x >> 17; x ^= x << 5;
+        double cx = (int)(x % 2001) / 100.0 - 10;
+        x ^= x << 13; x ^= x >> 17; x ^= x << 5;
+        double cz = (int)(x % 2001) / 10.0 + 5;
+        x ^= x << 13; x ^= x >> 17; x ^= x << 5;
+        double r = (int)(x % 1000) / 100.0 + 0.05;
+        rt_object s = make(RT_SPHERE, cx, 0, cz, r, 0);
+        rt_object_prepare(&s);
+        x ^= x << 13; x ^= x >> 17; x ^= x << 5;
+        double dx = ((int)(x % 2001) - 1000) / 2000.0;
+        rt_ray ry = ray(0, 0, 0, dx, 0, 1);
+        double l = sqrt(dx * dx + 1), ddx = dx / l, ddz = 1 / l;
+        double ccx = F2D(s.a.x), ccz = F2D(s.a.z), rr = F2D(s.r);
+        double b = ccx * ddx + ccz * ddz;
+        double hx = ccx - b * ddx, hz = ccz - b * ddz;
+        double h2 = hx * hx + hz * hz, disc = rr * rr - h2;
+        fx_t t;
+        uint8_t part;
+        int hit = rt_intersect(&s, &ry, RT_EPS, FX_MAX, &t, &part);
+        n++;
+        if (fabs(sqrt(h2) - rr) < 1e-3)
+            continue; /* the silhouette: either answer is right */
+        if (hit != (disc > 0)) {
+            bad_hit++;
+            continue;
+        }
+        if (hit) {
+            /* The hit point lies on the surface, on the near side. */
+            double px = F2D(ry.o.x) + F2D(t) * F2D(ry.d.x) - ccx;
+            double pz = F2D(ry.o.z) + F2D(t) * F2D(ry.d.z) - ccz;
+            double off = sqrt(px * px + pz * pz) - rr;
+            /* Far side when starting inside, or when the near root lies
+             * below t_min. */
+            int inside = ccx * ccx + ccz * ccz < rr * rr ||
+                         b - sqrt(disc) <= F2D(RT_EPS) + 1e-6;
+            if (fabs(off) > 1.0 / 8192 + F2D(t) / 32768 ||
+                (px * ddx + pz * ddz > 0) != inside)
+                bad_t++;
+        }
+    }
+    CHECK_EQ(bad_hit, 0);
+    CHECK_EQ(bad_t, 0);
+    printf("random sphere rays: %d, hit/miss disagreements %d, hit points "
+           "off the surface beyond the bound: %d\n", n, bad_hit, bad_t);
+}
+
+int main(void)
+{
+    sphere_cases();
+    quad_cases();
+    box_cases();
+    cylinder_cases();
+    cone_cases();
+    random_spheres();
+    return th_summary();
+}
