@@ -119,7 +119,8 @@ rt_rgb rt_trace(const rt_tracer *tr, const rt_ray *r, unsigned depth,
     const rt_object *o = &s->obj[oi];
     const rt_material *m = &s->mat[o->material];
     fx_vec3 p = fx_v3_madd(r->o, r->d, t);
-    fx_vec3 ng = rt_normal(o, p, part);
+    const fx_vec3 ng_out = rt_normal(o, p, part);
+    fx_vec3 ng = ng_out;
     int outside = o->kind == RT_QUAD || fx_v3_dot_q32(r->d, ng) <= 0;
     if (fx_v3_dot_q32(r->d, ng) > 0)
         ng = fx_v3_neg(ng); /* face the ray */
@@ -130,8 +131,8 @@ rt_rgb rt_trace(const rt_tracer *tr, const rt_ray *r, unsigned depth,
 #endif
     rt_rgb base = m->color;
 #if !defined(RT_NO_TEXTURES)
-    if (m->texture != RT_TEX_NONE)
-        base = rt_texel(m, o, p);
+    if (m->texture != RT_TEX_NONE) /* read inside: see render-model.md */
+        base = rt_texel(m, o, fx_v3_madd(p, ng_out, -RT_EPS));
 #endif
     fx_vec3 p_out = fx_v3_madd(p, ng, RT_EPS);
     unsigned skip_out = (o->convex && outside) ? oi : NO_SKIP;

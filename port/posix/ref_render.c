@@ -513,7 +513,10 @@ static vec shade(const ref_scene *rs, vec o, vec d, int depth, int obj,
     vec P = madd(o, d, hit->t), q = sub(P, sh->a), V = scale(d, -1.0);
     int outside = sh->kind == RT_QUAD || dot(d, hit->n_out) <= 0;
     vec Ng = dot(d, hit->n_out) <= 0 ? hit->n_out : scale(hit->n_out, -1.0);
-    vec N = Ng, C = texel(m, q), colour;
+    /* Textures are read a hair inside the surface, so a face lying on a
+     * cell boundary does not flip cells on rounding noise. */
+    vec N = Ng, C = texel(m, sub(madd(P, hit->n_out, -REF_EPS), sh->a));
+    vec colour;
     vec P_out = madd(P, Ng, REF_EPS), P_in = madd(P, Ng, -REF_EPS);
     /* Convex and leaving its outside: the ray cannot meet it again. Both
      * sides of a quad are its outside, so its transmitted ray skips it too
