@@ -9,24 +9,35 @@
 #include <stddef.h>
 #include "rt_scene.h"
 
+/* Where and what the first problem in the text is. The message names the
+ * limit or rule that was broken; it is plain ASCII without a position, so a
+ * caller can print "file:line:col: msg", then the line, then a marker. */
 typedef struct {
     uint32_t line;   /* 1-based line of the problem */
     uint32_t col;    /* 1-based column (bytes) */
     size_t line_off; /* offset of that line's first byte in the input */
-    size_t line_len; /* its length, without the newline */
-    char msg[96];    /* what is wrong, NUL-terminated, no position */
+    size_t line_len; /* its length, without the newline (or "\r\n") */
+    size_t tok_len;  /* bytes of the offending token from col; 0 when
+                        something is missing at the end of a line */
+    char msg[192];   /* what is wrong, NUL-terminated, no position */
 } rt_parse_error;
 
 /* Parses len bytes of scene text into *s (which it initialises first).
- * Never reads outside text[0..len). Returns RT_OK; or RT_ERR_PARSE,
- * RT_ERR_CAPACITY or RT_ERR_DEGENERATE with *err filled in. */
+ * Never reads outside text[0..len); time is linear in len; no recursion,
+ * no allocation. Returns RT_OK; or RT_ERR_PARSE, RT_ERR_CAPACITY or
+ * RT_ERR_DEGENERATE with *err filled in (err must not be NULL). After an
+ * error *s holds a partial scene: do not render it. s->features is left 0. */
 rt_status rt_parse(const char *text, size_t len, rt_scene *s,
                    rt_parse_error *err);
 
 /* Parses one decimal number [+-]digits[.digits] at text[0..len) straight
- * to Q16.16, correctly rounded to nearest (ties away from zero). Stores the
- * count of bytes used in *used. Returns RT_OK, or RT_ERR_PARSE for no
- * number, a value outside the Q16.16 range, or more than 40 digits. */
+ * to Q16.16, correctly rounded to nearest (ties away from zero). Either
+ * side of the point may be empty ("1.", ".5"), not both. Stores the count
+ * of bytes used in *used (if used is not NULL; 0 when there is no number)
+ * and stops at the first byte that cannot continue the number, which the
+ * caller checks. Returns RT_OK, or RT_ERR_PARSE for no number, a value
+ * that rounds outside the Q16.16 range, or more than 40 digits in all;
+ * *out is written only on success. */
 rt_status rt_parse_fx(const char *text, size_t len, fx_t *out, size_t *used);
 
 #endif /* RT_PARSE_H */
