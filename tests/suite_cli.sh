@@ -21,7 +21,7 @@ expect() {
     local rc=$?
     if [ "$rc" -ne "$want" ]; then
         bad "'$*' exited $rc, want $want; stderr: $(head -c 300 "$tmp/err")"
-    elif ! grep -qE -- "$pat" "$tmp/err" "$tmp/out"; then
+    elif [ -n "$pat" ] && ! grep -qE -- "$pat" "$tmp/err" "$tmp/out"; then
         bad "'$*' said: $(head -c 300 "$tmp/err"), want /$pat/"
     else
         ok
