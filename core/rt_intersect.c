@@ -11,6 +11,14 @@
  */
 #include "rt_internal.h"
 
+#if !defined(RT_NO_SPHERE) || !defined(RT_NO_QUAD) || !defined(RT_NO_BOX) || \
+    !defined(RT_NO_CYLINDER) || !defined(RT_NO_CONE)
+#define RT_ANY_SHAPE 1
+#else
+#define RT_ANY_SHAPE 0 /* a firmware for a scene with no objects */
+#endif
+
+#if RT_ANY_SHAPE
 /* Closest approach of the ray to the bounding sphere (c, r). Returns 0 on
  * a miss; else *tca (Q16.16, may exceed the fx_t range), *thc (half chord)
  * and *h = c - (o + tca d), the offset from the closest point to c. */
@@ -49,6 +57,9 @@ static int take(int64_t t, fx_t tmin, fx_t *best)
     return 0;
 }
 
+#endif /* RT_ANY_SHAPE */
+
+#if !defined(RT_NO_SPHERE)
 static int hit_sphere(const rt_object *o, const rt_ray *r, fx_t tmin,
                       fx_t tmax, fx_t *t, uint8_t *part)
 {
@@ -63,6 +74,9 @@ static int hit_sphere(const rt_object *o, const rt_ray *r, fx_t tmin,
     return 1;
 }
 
+#endif
+
+#if !defined(RT_NO_QUAD)
 static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
                     fx_t tmax, fx_t *t, uint8_t *part)
 {
@@ -94,6 +108,9 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
     return 1;
 }
 
+#endif
+
+#if !defined(RT_NO_BOX)
 static int hit_box(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                    fx_t *t, uint8_t *part)
 {
@@ -134,6 +151,9 @@ static int hit_box(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
     return 0;
 }
 
+#endif
+
+#if !defined(RT_NO_CYLINDER) || !defined(RT_NO_CONE)
 /* Scales v by 2^-k, rounding to nearest (k may be negative). */
 static fx_t to_frame(int64_t v, int k)
 {
@@ -232,24 +252,41 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
     return found;
 }
 
+#endif
+
 int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                  fx_t *t, uint8_t *part)
 {
-    int64_t tca, thc, h[3];
     switch (o->kind) {
+#if !defined(RT_NO_SPHERE)
     case RT_SPHERE:
         return hit_sphere(o, r, tmin, tmax, t, part);
+#endif
+#if !defined(RT_NO_QUAD) || !defined(RT_NO_BOX)
     case RT_QUAD:
-    case RT_BOX:
+    case RT_BOX: {
+        int64_t tca, thc, h[3];
         if (!bsphere(o->bc, o->br, r, &tca, &thc, h) ||
             tca + thc <= tmin || tca - thc >= tmax)
             return 0;
-        return o->kind == RT_QUAD ? hit_quad(o, r, tmin, tmax, t, part)
-                                  : hit_box(o, r, tmin, tmax, t, part);
+#if !defined(RT_NO_QUAD)
+        if (o->kind == RT_QUAD)
+            return hit_quad(o, r, tmin, tmax, t, part);
+#endif
+#if !defined(RT_NO_BOX)
+        if (o->kind == RT_BOX)
+            return hit_box(o, r, tmin, tmax, t, part);
+#endif
+        return 0;
+    }
+#endif
+#if !defined(RT_NO_CYLINDER) || !defined(RT_NO_CONE)
     case RT_CYLINDER:
     case RT_CONE:
         return hit_upright(o, r, tmin, tmax, t, part);
-    default:
+#endif
+    default: /* a kind this build removed; rendering refuses such scenes */
+        (void)r, (void)tmin, (void)tmax, (void)t, (void)part;
         return 0;
     }
 }

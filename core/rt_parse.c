@@ -998,19 +998,20 @@ static rt_status st_object(parser *p, const token *kw, int kind, rt_scene *s,
 /* ---- The file ----------------------------------------------------------- */
 
 enum {
-    S_IMAGE, S_CAMERA, S_BACKGROUND, S_AMBIENT, S_LIGHT, S_MATERIAL,
-    S_SPHERE, S_QUAD, S_BOX, S_CYLINDER, S_CONE
+    S_IMAGE, S_CAMERA, S_BACKGROUND, S_AMBIENT, S_SHADOWS, S_LIGHT,
+    S_MATERIAL, S_SPHERE, S_QUAD, S_BOX, S_CYLINDER, S_CONE
 };
 static const char *const stmt_keys[] = {
-    "image", "light", "camera", "background", "ambient", "material",
-    "sphere", "quad", "box", "cylinder", "cone", NULL};
+    "image", "light", "camera", "background", "ambient", "shadows",
+    "material", "sphere", "quad", "box", "cylinder", "cone", NULL};
 /* stmt_keys order, so the message lists them as a file usually has them. */
 static const uint8_t stmt_ids[] = {S_IMAGE, S_LIGHT, S_CAMERA, S_BACKGROUND,
-                                   S_AMBIENT, S_MATERIAL, S_SPHERE, S_QUAD,
-                                   S_BOX, S_CYLINDER, S_CONE};
+                                   S_AMBIENT, S_SHADOWS, S_MATERIAL,
+                                   S_SPHERE, S_QUAD, S_BOX, S_CYLINDER,
+                                   S_CONE};
 
 static rt_status statement(parser *p, const token *kw, rt_scene *s,
-                           name_table names, uint32_t once[4])
+                           name_table names, uint32_t once[5])
 {
     int i = find(p, kw, stmt_keys);
     if (i < 0) {
@@ -1022,7 +1023,7 @@ static rt_status statement(parser *p, const token *kw, rt_scene *s,
         return RT_ERR_PARSE;
     }
     int id = stmt_ids[i];
-    if (id <= S_AMBIENT) {
+    if (id <= S_SHADOWS) {
         if (once[id]) {
             fail(p, kw, RT_ERR_PARSE, "second '");
             say(p, stmt_keys[i]);
@@ -1044,6 +1045,19 @@ static rt_status statement(parser *p, const token *kw, rt_scene *s,
     case S_AMBIENT:
         TRY(get_rgb(p, "ambient", &s->ambient, LIGHT_MAX));
         return end_stmt(p, "ambient");
+    case S_SHADOWS: {
+        static const char *const onoff[] = {"off", "on", NULL};
+        token tk;
+        TRY(next_token(p, &tk));
+        int v = find(p, &tk, onoff);
+        if (v < 0) {
+            fail(p, &tk, RT_ERR_PARSE, "'shadows' needs 'on' or 'off'");
+            say_got(p, &tk);
+            return RT_ERR_PARSE;
+        }
+        s->shadows = (uint8_t)v;
+        return end_stmt(p, "shadows");
+    }
     case S_LIGHT:
         return st_light(p, kw, s);
     case S_MATERIAL:
@@ -1057,7 +1071,7 @@ rt_status rt_parse(const char *text, size_t len, rt_scene *s,
                    rt_parse_error *err)
 {
     name_table names;
-    uint32_t once[4] = {0, 0, 0, 0};
+    uint32_t once[5] = {0, 0, 0, 0, 0};
     parser p;
     token kw;
 

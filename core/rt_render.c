@@ -23,10 +23,14 @@ size_t rt_row_bytes(const rt_options *o)
 /* Grid side n for spp = n * n, or 0 if spp is not a supported square. */
 static unsigned grid_side(unsigned spp)
 {
+#if defined(RT_NO_SUPERSAMPLING)
+    return spp == 1 ? 1 : 0; /* a constant: the sample loops fold away */
+#else
     for (unsigned n = 1; n <= RT_MAX_SPP_SIDE; n++)
         if (n * n == spp)
             return n;
     return 0;
+#endif
 }
 
 uint32_t rt_scene_features(const rt_scene *s, uint8_t spp)
@@ -185,7 +189,9 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
                          int y1, uint8_t *row_buf, rt_row_fn fn, void *ctx,
                          rt_stats *stats)
 {
-    unsigned n = grid_side(o->spp);
+    if (s && o && (rt_scene_features(s, o->spp) & ~rt_build_features()))
+        return RT_ERR_UNSUPPORTED;
+    unsigned n = o ? grid_side(o->spp) : 0;
     if (!s || !o || !row_buf || !fn || n == 0 || o->width < 1 ||
         o->width > RT_MAX_WIDTH || o->height < 1 ||
         o->height > RT_MAX_HEIGHT || o->depth > RT_MAX_DEPTH ||
@@ -193,8 +199,6 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
         y0 > y1)
         return RT_ERR_ARG;
     uint32_t feat = rt_scene_features(s, o->spp);
-    if (feat & ~rt_build_features())
-        return RT_ERR_UNSUPPORTED;
 
     rt_tracer tr;
     tr.scene = s;

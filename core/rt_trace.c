@@ -35,8 +35,12 @@ void rt_ray_set(rt_ray *r, fx_vec3 o, fx_vec3 d, uint32_t feat)
 {
     r->o = o;
     r->d = d;
+#if !defined(RT_NO_BOX)
     if (feat & RT_FEAT_BOX)
         r->inv = fx_v3(fx_recip(d.x), fx_recip(d.y), fx_recip(d.z));
+#else
+    (void)feat;
+#endif
 }
 
 /* Nearest hit among all objects but `skip`. */
@@ -143,7 +147,12 @@ rt_rgb rt_trace(const rt_tracer *tr, const rt_ray *r, unsigned depth,
     rt_rgb c = rgb(0, 0, 0);
     rgb_madd(&c, rgb_mul(base, s->ambient), fx_mul(wl, m->ambient));
     fx_t kdl = fx_mul(wl, m->diffuse);
-    for (unsigned li = 0; li < s->n_lights; li++) {
+#if defined(RT_NO_MULTILIGHT)
+    const unsigned n_lights = s->n_lights ? 1 : 0; /* checked at start */
+#else
+    const unsigned n_lights = s->n_lights;
+#endif
+    for (unsigned li = 0; li < n_lights; li++) {
         const rt_light *l = &s->light[li];
         fx_vec3 lv = fx_v3_sub(l->pos, p);
         fx_vec3 ld = fx_v3_normalize(lv);

@@ -10,7 +10,10 @@ SAN_FLAGS :=
 endif
 
 HOST_OPT ?= -O2
-HOST_CFLAGS ?= -std=c99 $(HOST_OPT) -g -D_POSIX_C_SOURCE=200809L $(SAN_FLAGS)
+# RT_DEFS: core configuration for this build, e.g. -DRT_NO_REFRACTION.
+RT_DEFS ?=
+HOST_CFLAGS ?= -std=c99 $(HOST_OPT) -g -D_POSIX_C_SOURCE=200809L $(SAN_FLAGS) \
+               $(RT_DEFS)
 HOST_LDFLAGS ?= $(SAN_FLAGS)
 HOST_LIBS := -lm -lpthread
 

@@ -578,7 +578,21 @@ static void test_statement_errors(void)
 {
     BAD("sphre", PE, 1, 1,
         "unknown keyword 'sphre' (expected one of: image light camera "
-        "background ambient material sphere quad box cylinder cone)");
+        "background ambient shadows material sphere quad box cylinder "
+        "cone)");
+    /* shadows on|off, once. */
+    {
+        static rt_scene sh;
+        rt_parse_error e;
+        CHECK_EQ(rt_parse(CAM "shadows off\n", strlen(CAM "shadows off\n"),
+                          &sh, &e), RT_OK);
+        CHECK_EQ(sh.shadows, 0);
+        CHECK_EQ(rt_parse(CAM, strlen(CAM), &sh, &e), RT_OK);
+        CHECK_EQ(sh.shadows, 1);
+    }
+    BAD(CAM "shadows maybe", PE, 2, 9, "'shadows' needs 'on' or 'off'");
+    BAD(CAM "shadows on\nshadows off", PE, 3, 1, "second 'shadows'");
+    BAD(CAM "shadows on off", PE, 2, 12, "");
     BAD("\n\n  42 1 2", PE, 3, 3, "unknown keyword '42'");
     /* The camera. */
     BAD("", PE, 1, 1, "no camera statement");

@@ -40,7 +40,7 @@ typedef struct {
     const char *scene_path;
     const char *out_path;
     long width, height, spp, depth, jobs;
-    int stats, quiet, reference;
+    int stats, quiet, reference, build_flags;
     const char *format; /* rgb888 (default), rgb565le, rgb565be */
     int dither;
 } cli;
@@ -71,6 +71,8 @@ static void usage(FILE *f)
 "    -j, --jobs N        render with N threads, 1..64 (same bytes as -j 1)\n"
 "        --reference     render with the double-precision reference\n"
 "        --stats         print ray counters and timing on stderr\n"
+"        --build-flags   print the -DRT_NO_* flags that remove every effect\n"
+"                        the scene (at this spp) does not need, and exit\n"
 "        --format F      rows as rgb888 (default), rgb565le or rgb565be;\n"
 "                        565 output is expanded back to a viewable PPM\n"
 "        --dither        ordered dithering for the 565 formats\n"
@@ -165,6 +167,8 @@ static int parse_args(int argc, char **argv, cli *c)
             c->quiet = 1;
         } else if (strcmp(a, "--reference") == 0) {
             c->reference = 1;
+        } else if (strcmp(a, "--build-flags") == 0) {
+            c->build_flags = 1;
         } else if (a[0] == '-' && a[1] != '\0') {
             if (cli_needs_value(a))
                 return 2; /* cli_value already said what was missing */
@@ -409,6 +413,28 @@ static int render_scene(const cli *c, const rt_scene *scene)
     return rc;
 }
 
+/* The RT_NO_* flag of each feature bit, in bit order (rt_scene.h). */
+static const char *const no_flag[] = {
+    "RT_NO_SHADOWS", "RT_NO_REFLECTION", "RT_NO_REFRACTION", "RT_NO_TEXTURES",
+    "RT_NO_BUMP", "RT_NO_SPECULAR", "RT_NO_MULTILIGHT", "RT_NO_SUPERSAMPLING",
+    "RT_NO_SPHERE", "RT_NO_QUAD", "RT_NO_BOX", "RT_NO_CYLINDER", "RT_NO_CONE"
+};
+
+static int print_build_flags(const cli *c, const rt_scene *scene)
+{
+    uint8_t spp = c->spp ? (uint8_t)c->spp : scene->spp;
+    uint32_t need = rt_scene_features(scene, spp);
+    const char *sep = "";
+    for (unsigned i = 0; i < sizeof no_flag / sizeof no_flag[0]; i++) {
+        if (!(need & (1u << i))) {
+            printf("%s-D%s", sep, no_flag[i]);
+            sep = " ";
+        }
+    }
+    printf("\n");
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc > 1 && strcmp(argv[1], "compare") == 0)
@@ -443,5 +469,7 @@ int main(int argc, char **argv)
         return 2;
     }
     free(text);
+    if (c.build_flags)
+        return print_build_flags(&c, &scene);
     return render_scene(&c, &scene);
 }
