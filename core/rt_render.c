@@ -13,6 +13,7 @@ void rt_options_from_scene(rt_options *o, const rt_scene *s)
     o->depth = s->depth;
     o->format = RT_RGB888;
     o->dither = 0;
+    o->adaptive = 0;
 }
 
 size_t rt_row_bytes(const rt_options *o)
@@ -185,6 +186,102 @@ static fx_t clamp01(fx_t v)
     return v < 0 ? 0 : (v > FX_ONE ? FX_ONE : v);
 }
 
+/* One pixel: the mean of its n x n samples (cf->n), rounded to 8 bits. */
+static void pixel(const rt_tracer *tr, const cam_frame *cf,
+                  const rt_options *o, unsigned x, unsigned y, uint8_t rgb8[3])
+{
+    const unsigned n = cf->n, spp = n * n;
+    const int32_t wn = (int32_t)(o->width * n), hn = (int32_t)(o->height * n);
+    int64_t sum[3] = { 0, 0, 0 };
+    for (unsigned j = 0; j < n; j++) {
+        fx_t sy = cam_offset(cf, hn - (int32_t)(2 * y * n + 2 * j + 1));
+        fx_vec3 base = fx_v3_madd(cf->w, cf->up, sy);
+        for (unsigned i = 0; i < n; i++) {
+            fx_t sx = cam_offset(cf, (int32_t)(2 * x * n + 2 * i + 1) - wn);
+            rt_ray r;
+            rt_ray_set(&r, tr->scene->cam.eye,
+                       fx_v3_normalize(fx_v3_madd(base, cf->right, sx)),
+                       tr->feat);
+            RT_COUNT(tr, primary);
+            rt_rgb c = rt_trace(tr, &r, 0, 0xFFFFu);
+            sum[0] += clamp01(c.r);
+            sum[1] += clamp01(c.g);
+            sum[2] += clamp01(c.b);
+        }
+    }
+    for (int k = 0; k < 3; k++)
+        rgb8[k] = fx_to_u8((fx_t)((sum[k] + spp / 2) / spp));
+}
+
+size_t rt_buffer_bytes(const rt_options *o)
+{
+    size_t extra = 0;
+#if !defined(RT_NO_SUPERSAMPLING)
+    if (o->adaptive && o->spp > 1)
+        extra = 9u * o->width; /* three rows of 1-spp colours */
+#endif
+    return rt_row_bytes(o) + extra;
+}
+
+#if !defined(RT_NO_SUPERSAMPLING)
+/* Adaptive anti-aliasing: each pixel starts from its centre sample; only a
+ * pixel whose 3x3 neighbourhood of centre samples differs by more than
+ * o->adaptive (in 8-bit levels, any channel) gets the full n x n grid. The
+ * centre samples of rows y-1..y+1 live in the scratch part of row_buf, so a
+ * band computes the rows around it too and any banding gives the same
+ * bytes. */
+static rt_status render_adaptive(const rt_tracer *tr, const cam_frame *cf1,
+                                 const cam_frame *cfn, const rt_options *o,
+                                 int y0, int y1, uint8_t *row_buf,
+                                 rt_row_fn fn, void *ctx)
+{
+    const unsigned w = o->width;
+    uint8_t *slot[3];
+    int slot_y[3] = { -1, -1, -1 };
+    for (int k = 0; k < 3; k++)
+        slot[k] = row_buf + rt_row_bytes(o) + (size_t)k * 3u * w;
+    for (int y = y0; y < y1; y++) {
+        /* Centre samples of rows y-1, y, y+1 (clamped to the image). */
+        const uint8_t *near[3];
+        for (int d = -1; d <= 1; d++) {
+            int yy = y + d < 0 ? 0 : (y + d >= o->height ? o->height - 1
+                                                         : y + d);
+            int k = yy % 3;
+            if (slot_y[k] != yy) {
+                for (unsigned x = 0; x < w; x++)
+                    pixel(tr, cf1, o, x, (unsigned)yy, slot[k] + 3 * x);
+                slot_y[k] = yy;
+            }
+            near[d + 1] = slot[k];
+        }
+        for (unsigned x = 0; x < w; x++) {
+            const uint8_t *c = near[1] + 3 * x;
+            unsigned contrast = 0;
+            for (int d = 0; d < 3; d++) {
+                for (int dx = -1; dx <= 1; dx++) {
+                    unsigned xx = (x == 0 && dx < 0) ? 0
+                                  : (x + 1 == w && dx > 0) ? x
+                                                           : x + (unsigned)dx;
+                    for (int ch = 0; ch < 3; ch++) {
+                        int diff = (int)near[d][3 * xx + ch] - (int)c[ch];
+                        unsigned a = (unsigned)(diff < 0 ? -diff : diff);
+                        if (a > contrast)
+                            contrast = a;
+                    }
+                }
+            }
+            uint8_t rgb8[3] = { c[0], c[1], c[2] };
+            if (contrast > o->adaptive)
+                pixel(tr, cfn, o, x, (unsigned)y, rgb8);
+            put_pixel(row_buf, o, x, (unsigned)y, rgb8);
+        }
+        if (fn(ctx, y, row_buf, rt_row_bytes(o)) != 0)
+            return RT_ERR_ABORTED;
+    }
+    return RT_OK;
+}
+#endif
+
 rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
                          int y1, uint8_t *row_buf, rt_row_fn fn, void *ctx,
                          rt_stats *stats)
@@ -198,42 +295,25 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
         o->format > RT_RGB565_BE || y0 < 0 || y1 > (int)o->height ||
         y0 > y1)
         return RT_ERR_ARG;
-    uint32_t feat = rt_scene_features(s, o->spp);
 
     rt_tracer tr;
     tr.scene = s;
     tr.max_depth = o->depth;
-    tr.feat = feat;
+    tr.feat = rt_scene_features(s, o->spp);
     tr.stats = stats;
     cam_frame cf;
     cam_setup(&cf, s, o, n);
-    const unsigned spp = n * n;
-    const int32_t wn = (int32_t)(o->width * n), hn = (int32_t)(o->height * n);
-
+#if !defined(RT_NO_SUPERSAMPLING)
+    if (o->adaptive && n > 1) {
+        cam_frame cf1;
+        cam_setup(&cf1, s, o, 1);
+        return render_adaptive(&tr, &cf1, &cf, o, y0, y1, row_buf, fn, ctx);
+    }
+#endif
     for (int y = y0; y < y1; y++) {
         for (unsigned x = 0; x < o->width; x++) {
-            int64_t sum[3] = { 0, 0, 0 };
-            for (unsigned j = 0; j < n; j++) {
-                fx_t sy = cam_offset(&cf, hn - (int32_t)(2 * (unsigned)y * n +
-                                                         2 * j + 1));
-                fx_vec3 base = fx_v3_madd(cf.w, cf.up, sy);
-                for (unsigned i = 0; i < n; i++) {
-                    fx_t sx = cam_offset(&cf, (int32_t)(2 * x * n + 2 * i + 1) -
-                                                  wn);
-                    rt_ray r;
-                    rt_ray_set(&r, s->cam.eye,
-                               fx_v3_normalize(fx_v3_madd(base, cf.right, sx)),
-                               feat);
-                    RT_COUNT(&tr, primary);
-                    rt_rgb c = rt_trace(&tr, &r, 0, 0xFFFFu);
-                    sum[0] += clamp01(c.r);
-                    sum[1] += clamp01(c.g);
-                    sum[2] += clamp01(c.b);
-                }
-            }
             uint8_t rgb8[3];
-            for (int k = 0; k < 3; k++)
-                rgb8[k] = fx_to_u8((fx_t)((sum[k] + spp / 2) / spp));
+            pixel(&tr, &cf, o, x, (unsigned)y, rgb8);
             put_pixel(row_buf, o, x, (unsigned)y, rgb8);
         }
         if (fn(ctx, y, row_buf, rt_row_bytes(o)) != 0)

@@ -22,6 +22,11 @@ typedef struct {
     uint8_t depth;          /* recursion depth, 0..RT_MAX_DEPTH */
     uint8_t format;         /* rt_format */
     uint8_t dither;         /* RGB565 only: 1 = ordered 4x4 dither */
+    uint8_t adaptive;       /* 0: every pixel gets spp samples. 1..255:
+                               adaptive anti-aliasing, only pixels whose
+                               3x3 neighbourhood of centre samples differs
+                               by more than this many 8-bit levels get the
+                               spp grid; the rest keep their centre sample */
 } rt_options;
 
 /* Ray and test counters. The renderer adds to them and never resets them,
@@ -42,11 +47,15 @@ typedef int (*rt_row_fn)(void *ctx, int y, const uint8_t *row, size_t nbytes);
 /* Fills *o from the scene's defaults (size, spp, depth), RGB888. */
 void rt_options_from_scene(rt_options *o, const rt_scene *s);
 
-/* Bytes in one row for these options (width * 3 or width * 2). */
+/* Bytes in one row handed to the callback (width * 3 or width * 2). */
 size_t rt_row_bytes(const rt_options *o);
 
-/* Renders rows y0 <= y < y1 (top row is 0) into row_buf, calling fn after
- * each. Rows are independent: any split into bands gives the same bytes.
+/* Bytes the caller's row buffer must hold: rt_row_bytes(), plus 9 * width
+ * of scratch when adaptive anti-aliasing is on. */
+size_t rt_buffer_bytes(const rt_options *o);
+
+/* Renders rows y0 <= y < y1 (top row is 0) into row_buf (rt_buffer_bytes()
+ * bytes), calling fn after each. Rows are independent: any split into bands gives the same bytes.
  * stats may be NULL. Returns RT_OK, RT_ERR_ARG for bad options or rows,
  * RT_ERR_UNSUPPORTED when the scene needs an effect this build removed, or
  * RT_ERR_ABORTED when fn returned non-zero. */

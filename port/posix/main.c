@@ -39,7 +39,7 @@ typedef rt_status (*render_fn)(const rt_scene *, const rt_options *, int,
 typedef struct {
     const char *scene_path;
     const char *out_path;
-    long width, height, spp, depth, jobs;
+    long width, height, spp, depth, jobs, adaptive;
     int stats, quiet, reference, build_flags;
     const char *format; /* rgb888 (default), rgb565le, rgb565be */
     int dither;
@@ -69,6 +69,9 @@ static void usage(FILE *f)
 "    -s, --spp N         samples per pixel: 1, 4, 9 or 16\n"
 "    -d, --depth N       reflection/refraction depth, 0..RT_MAX_DEPTH (5)\n"
 "    -j, --jobs N        render with N threads, 1..64 (same bytes as -j 1)\n"
+"        --adaptive T    adaptive anti-aliasing: only pixels whose 3x3\n"
+"                        neighbourhood differs by more than T (1..255, in\n"
+"                        8-bit levels) get the full -s grid; needs -s > 1\n"
 "        --reference     render with the double-precision reference\n"
 "        --stats         print ray counters and timing on stderr\n"
 "        --build-flags   print the -DRT_NO_* flags that remove every effect\n"
@@ -149,6 +152,10 @@ static int parse_args(int argc, char **argv, cli *c)
             if (cli_long(a, val, 0, RT_MAX_DEPTH, &c->depth))
                 return 2;
             c->depth++; /* stored +1 so 0 means "scene default" */
+        } else if (strcmp(a, "--adaptive") == 0 &&
+                   (val = cli_value(argc, argv, &i, a)) != NULL) {
+            if (cli_long(a, val, 1, 255, &c->adaptive))
+                return 2;
         } else if (TAKE("-j", "--jobs")) {
             if (cli_long(a, val, 1, 64, &c->jobs))
                 return 2;
@@ -184,6 +191,8 @@ static int parse_args(int argc, char **argv, cli *c)
     if (!c->scene_path)
         return cli_error("no scene file given (try: fixtrace "
                          "scenes/seed.scene, or fixtrace --help)");
+    if (c->adaptive && c->spp == 1)
+        return cli_error("--adaptive needs -s 4, 9 or 16");
     if (c->dither && strcmp(c->format, "rgb888") == 0)
         return cli_error("--dither needs --format rgb565le or rgb565be");
     return 0;
@@ -254,12 +263,16 @@ static void add_stats(rt_stats *a, const rt_stats *b)
     a->tests += b->tests;
 }
 
-/* Worker: takes rows one at a time, so threads balance and every row is
- * rendered exactly as with one thread. */
+/* Rows a worker takes at a time: small enough to balance threads, large
+ * enough that adaptive anti-aliasing rarely recomputes neighbour rows. */
+#define BAND_ROWS 8
+
+/* Worker: takes bands of rows in turn; rows do not depend on banding, so
+ * the bytes equal a one-thread render. */
 static void *worker(void *arg)
 {
     job *j = arg;
-    size_t nbytes = rt_row_bytes(&j->opt);
+    size_t nbytes = rt_buffer_bytes(&j->opt);
     uint8_t *row = malloc(nbytes);
     rt_stats st;
     memset(&st, 0, sizeof st);
@@ -271,7 +284,8 @@ static void *worker(void *arg)
     }
     for (;;) {
         pthread_mutex_lock(&j->lock);
-        int y = j->status == RT_OK ? j->next_row++ : j->opt.height;
+        int y = j->status == RT_OK ? j->next_row : j->opt.height;
+        j->next_row += BAND_ROWS;
         j->rays_so_far = j->stats.primary + j->stats.shadow +
                          j->stats.reflection + j->stats.refraction;
         pthread_mutex_unlock(&j->lock);
@@ -279,7 +293,8 @@ static void *worker(void *arg)
             break;
         rt_stats row_st;
         memset(&row_st, 0, sizeof row_st);
-        rt_status rc = j->render(j->scene, &j->opt, y, y + 1, row, on_row, j,
+        int y1 = y + BAND_ROWS > j->opt.height ? j->opt.height : y + BAND_ROWS;
+        rt_status rc = j->render(j->scene, &j->opt, y, y1, row, on_row, j,
                                  &row_st);
         pthread_mutex_lock(&j->lock);
         add_stats(&j->stats, &row_st);
@@ -323,7 +338,11 @@ static int render_scene(const cli *c, const rt_scene *scene)
                    : strcmp(c->format, "rgb565be") == 0 ? RT_RGB565_BE
                                                         : RT_RGB888;
     j.opt.dither = (uint8_t)c->dither;
+    j.opt.adaptive = (uint8_t)c->adaptive;
     j.render = c->reference ? ref_render_rows : rt_render_rows;
+    if (c->reference && c->adaptive)
+        return cli_error("--adaptive is a fixed-point core mode; the "
+                         "reference always takes every sample");
     j.progress = !c->quiet && isatty(STDERR_FILENO);
     pthread_mutex_init(&j.lock, NULL);
 
