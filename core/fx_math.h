@@ -64,7 +64,13 @@ static inline fx_t fx_abs(fx_t a)
  * overflow. The 64-bit product is exact, so the error is at most 0.5 ulp. */
 static inline fx_t fx_mul(fx_t a, fx_t b)
 {
-    return fx_sat64(((int64_t)a * b + 0x8000) >> 16);
+    int64_t p = (int64_t)a * b + 0x8000; /* |p| < 2^62 + 2^15: no overflow */
+    int32_t hi = (int32_t)(p >> 32);
+    /* p >> 16 fits in 32 bits exactly when hi is in [-2^15, 2^15): one
+     * compare on the high word instead of two 64-bit compares. */
+    if ((uint32_t)(hi + 0x8000) > 0xFFFFu)
+        return (hi >> 31) ^ FX_MAX; /* FX_MIN if negative, else FX_MAX */
+    return (fx_t)(((uint32_t)hi << 16) | ((uint32_t)p >> 16));
 }
 
 /* Rounds a Q32.32 value held in an int64 to Q16.16, to nearest (ties toward
@@ -76,22 +82,50 @@ static inline fx_t fx_from_q32(int64_t q)
     return fx_sat64((q >> 16) + ((q >> 15) & 1));
 }
 
-/* Divides a by b, rounding to nearest (ties away from zero); saturates on
- * overflow. b == 0 gives FX_MAX for a >= 0 and FX_MIN for a < 0. */
+/* Number of leading zero bits of x (0..31); exact. x must not be 0. */
+static inline int fx_clz32(uint32_t x)
+{
+#if defined(__GNUC__)
+    return __builtin_clz(x); /* one instruction where the core has CLZ */
+#else
+    int n = 0;
+    if (x < 0x10000u) { n += 16; x <<= 16; }
+    if (x < 0x1000000u) { n += 8; x <<= 8; }
+    if (x < 0x10000000u) { n += 4; x <<= 4; }
+    if (x < 0x40000000u) { n += 2; x <<= 2; }
+    return n + (x < 0x80000000u);
+#endif
+}
+
+/* Number of leading zero bits of x (0..63); exact. x must not be 0. */
+static inline int fx_clz64(uint64_t x)
+{
+    uint32_t hi = (uint32_t)(x >> 32);
+    return hi ? fx_clz32(hi) : 32 + fx_clz32((uint32_t)x);
+}
+
+/* Divides a by b, correctly rounded to nearest (ties away from zero), so
+ * the error is at most 0.5 ulp; saturates on overflow. b == 0 gives FX_MAX
+ * for a >= 0 and FX_MIN for a < 0. */
 fx_t fx_div(fx_t a, fx_t b);
 
-/* Reciprocal 1/a: same rounding and saturation as fx_div(FX_ONE, a). */
+/* Reciprocal 1/a: the same value as fx_div(FX_ONE, a), so correctly
+ * rounded (ties away from zero) and saturated; 1/0 gives FX_MAX. */
 fx_t fx_recip(fx_t a);
 
-/* Square root, correctly rounded to nearest; negative input gives 0. */
+/* Square root, correctly rounded to nearest (there are no ties), so the
+ * error is below 0.5 ulp; cannot overflow (sqrt(FX_MAX) < 182). Negative
+ * input gives 0. */
 fx_t fx_sqrt(fx_t a);
 
 /* Square root of an unsigned Q32.32 value (for example an exact 64-bit sum
- * of squared Q16.16 values), correctly rounded to nearest, as an unsigned
- * Q16.16 value. Never overflows: the result is at most 2^32 - 1. */
+ * of squared Q16.16 values), correctly rounded to nearest (no ties), as an
+ * unsigned Q16.16 value. Saturates: a root that rounds to 2^32 (a >=
+ * 2^64 - 2^32) gives 2^32 - 1. */
 uint32_t fx_sqrt_q32(uint64_t a);
 
-/* Integer square root: floor(sqrt(a)). Exact for every input. */
+/* Integer square root: floor(sqrt(a)), exact for every input; cannot
+ * overflow (the result is below 2^32). */
 uint32_t fx_isqrt64(uint64_t a);
 
 /* floor(x), as an integer (exact). */

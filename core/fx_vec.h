@@ -11,6 +11,7 @@ typedef struct {
     fx_t x, y, z;
 } fx_vec3;
 
+/* Builds a vector from its components; exact. */
 static inline fx_vec3 fx_v3(fx_t x, fx_t y, fx_t z)
 {
     fx_vec3 v;
@@ -32,19 +33,21 @@ static inline fx_vec3 fx_v3_sub(fx_vec3 a, fx_vec3 b)
     return fx_v3(fx_sub(a.x, b.x), fx_sub(a.y, b.y), fx_sub(a.z, b.z));
 }
 
-/* -a per component; saturates only at FX_MIN. */
+/* -a per component; exact, saturates only at FX_MIN. */
 static inline fx_vec3 fx_v3_neg(fx_vec3 a)
 {
     return fx_v3(fx_neg(a.x), fx_neg(a.y), fx_neg(a.z));
 }
 
-/* a * s per component; each rounded to nearest as fx_mul, saturates. */
+/* a * s per component; each rounded to nearest (ties toward +infinity)
+ * as fx_mul, saturates. */
 static inline fx_vec3 fx_v3_scale(fx_vec3 a, fx_t s)
 {
     return fx_v3(fx_mul(a.x, s), fx_mul(a.y, s), fx_mul(a.z, s));
 }
 
-/* a + b * s per component: one rounding per component, saturates. */
+/* a + b * s per component: one rounding per component, to nearest (ties
+ * toward +infinity); saturates. */
 static inline fx_vec3 fx_v3_madd(fx_vec3 a, fx_vec3 b, fx_t s)
 {
     return fx_v3(fx_sat64((int64_t)a.x + (((int64_t)b.x * s + 0x8000) >> 16)),
@@ -75,16 +78,18 @@ fx_t fx_v3_dot(fx_vec3 a, fx_vec3 b);
 /* Exact |a|^2 as unsigned Q32.32; never overflows (at most 3 * 2^62). */
 uint64_t fx_v3_len2_q32(fx_vec3 a);
 
-/* Cross product; each component rounded once to nearest, saturates. */
+/* Cross product; each component exact in 64 bits, then rounded once to
+ * nearest (ties toward +infinity); saturates. */
 fx_vec3 fx_v3_cross(fx_vec3 a, fx_vec3 b);
 
 /* Length, correctly rounded to nearest from the exact |a|^2; saturates to
- * FX_MAX (only for lengths of 32768 or more). */
+ * FX_MAX (only for lengths that round to 32768 or more). */
 fx_t fx_v3_length(fx_vec3 a);
 
-/* Unit vector along a. Exact squares in 64 bits keep it accurate for tiny
- * and huge vectors alike: each component is within 1 ulp of the true value.
- * The zero vector gives the zero vector. */
+/* Unit vector along a: each component within 1 ulp of the true value (at
+ * most 0.5 + 2^-4 ulp; it is not correctly rounded) and never past +-1, for
+ * tiny and huge vectors alike, since the squared length is exact in 64
+ * bits; cannot overflow. The zero vector gives the zero vector. */
 fx_vec3 fx_v3_normalize(fx_vec3 a);
 
 #endif /* FX_VEC_H */

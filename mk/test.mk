@@ -19,6 +19,10 @@ $(HOST_BUILD)/tests/test_%: $(HOST_BUILD)/tests/test_%.o $(TEST_HARNESS_OBJ) \
 $(HOST_BUILD)/tests:
 	$(Q)mkdir -p $@
 
+# Objects are made by pattern rules; keep them (make would otherwise delete
+# the harness object as an intermediate between two test links).
+.SECONDARY:
+
 -include $(TEST_SRC:tests/%.c=$(HOST_BUILD)/tests/%.d)
 
 .PHONY: test test-build
