@@ -1,0 +1,209 @@
+# Bare-metal firmware (port/baremetal/README.md):
+#
+#   make firmware BOARD=b [SCENE=scenes/x.scene WIDTH=w HEIGHT=h SPP=n]
+#   make qemu     BOARD=b [same]    render under QEMU to build/<b>/out.ppm
+#   make size     BOARD=b           flash, RAM and stack of the firmware
+#
+# Boards: an385 (Cortex-M3), m0 (Cortex-M0 code on mps2-an385), microbit
+# (nRF51, Cortex-M0, 16 KB RAM), an505 (Cortex-M33), rv32 (QEMU virt).
+# WIDTH, HEIGHT and SPP of 0 mean "the scene's default". The scene text is
+# embedded in the image and parsed on the device. FW_APP=bringup builds
+# port/baremetal/bringup.c instead of the renderer (no core needed).
+# FW_DEFS adds -D options to every C file (for example -DRT_MAX_DEPTH=3).
+
+BOARD ?= an385
+SCENE ?= scenes/seed.scene
+WIDTH ?= 0
+HEIGHT ?= 0
+SPP ?= 0
+FW_APP ?= main
+FW_BRINGUP ?= 0
+FW_DEFS ?=
+QEMU_TIMEOUT ?= 300
+
+ARM_PREFIX ?= arm-none-eabi-
+RISCV_PREFIX ?= riscv64-unknown-elf-
+
+# ---- Boards -----------------------------------------------------------------
+# FW_CPU: code generation; FW_OPT: optimisation; FW_CAPS: capacity overrides
+# (rt_config.h, and FW_ROW_PIXELS, the row buffer of main.c); FW_ICOUNT: the -icount shift whose instruction count the
+# board's port_cycles_to_insns() undoes.
+
+FW_ARM_QEMU := qemu-system-arm -display none -monitor none -serial none \
+    -semihosting-config enable=on,target=native
+
+ifeq ($(BOARD),an385)
+FW_PREFIX := $(ARM_PREFIX)
+FW_CPU := -mcpu=cortex-m3 -mthumb
+FW_OPT := -O2
+FW_CAPS :=
+FW_LD := linker/an385.ld
+FW_BOARD_SRC := port/baremetal/board_an385.c port/baremetal/startup_cortexm.c
+FW_QEMU := $(FW_ARM_QEMU) -M mps2-an385
+FW_ICOUNT := 7
+else ifeq ($(BOARD),m0)
+FW_PREFIX := $(ARM_PREFIX)
+FW_CPU := -mcpu=cortex-m0 -mthumb
+FW_OPT := -O2
+FW_CAPS :=
+FW_LD := linker/an385.ld
+FW_BOARD_SRC := port/baremetal/board_an385.c port/baremetal/startup_cortexm.c
+FW_QEMU := $(FW_ARM_QEMU) -M mps2-an385
+FW_ICOUNT := 7
+else ifeq ($(BOARD),microbit)
+# 16 KB of RAM for everything: small capacities keep rt_scene small, the
+# row buffer holds 320 pixels, and -Os keeps the stack frames small (flash
+# is no constraint). RT_MAX_WIDTH stays large so that any scene's `image`
+# line parses; WIDTH must then be at most 320.
+FW_PREFIX := $(ARM_PREFIX)
+FW_CPU := -mcpu=cortex-m0 -mthumb
+FW_OPT := -Os
+FW_CAPS := -DRT_MAX_OBJECTS=16 -DRT_MAX_MATERIALS=12 -DRT_MAX_LIGHTS=2 \
+    -DRT_MAX_NAME=15 -DFW_ROW_PIXELS=320
+FW_LD := linker/microbit.ld
+FW_BOARD_SRC := port/baremetal/board_microbit.c \
+    port/baremetal/startup_cortexm.c
+FW_QEMU := $(FW_ARM_QEMU) -M microbit
+FW_ICOUNT := 7
+else ifeq ($(BOARD),an505)
+# Soft-float ABI: the core has no floating point, and nothing may touch the
+# FPU (it stays disabled in CPACR).
+FW_PREFIX := $(ARM_PREFIX)
+FW_CPU := -mcpu=cortex-m33 -mthumb -mfloat-abi=soft
+FW_OPT := -O2
+FW_CAPS :=
+FW_LD := linker/an505.ld
+FW_BOARD_SRC := port/baremetal/board_an505.c port/baremetal/startup_cortexm.c
+FW_QEMU := $(FW_ARM_QEMU) -M mps2-an505
+FW_ICOUNT := 7
+else ifeq ($(BOARD),rv32)
+FW_PREFIX := $(RISCV_PREFIX)
+FW_CPU := -march=rv32imac -misa-spec=2.2 -mabi=ilp32 -mcmodel=medany
+FW_OPT := -O2
+FW_CAPS :=
+FW_LD := linker/rv32.ld
+FW_BOARD_SRC := port/baremetal/board_rv32.c port/baremetal/startup_rv32.c
+FW_QEMU := qemu-system-riscv32 -M virt -bios none -display none \
+    -monitor none -serial none -semihosting-config enable=on,target=native
+FW_ICOUNT := 0
+endif
+
+# ---- Build ------------------------------------------------------------------
+
+FW_BUILD := build/$(BOARD)
+FW_CC := $(FW_PREFIX)gcc
+FW_SIZE := $(FW_PREFIX)size
+FW_NAME := $(if $(filter bringup,$(FW_APP)),bringup,fixtrace)
+FW_ELF := $(FW_BUILD)/$(FW_NAME).elf
+
+FW_CFLAGS := -std=c99 $(FW_OPT) -g $(FW_CPU) -ffreestanding \
+    -ffunction-sections -fdata-sections -DRT_STATS=0 $(FW_CAPS) $(FW_DEFS)
+FW_LDFLAGS := $(FW_CPU) -nostdlib -T $(FW_LD) -Wl,--gc-sections \
+    -Wl,-Map=$(FW_BUILD)/$(FW_NAME).map -Wl,--no-warn-rwx-segments
+
+FW_PORT_SRC := port/baremetal/common.c port/baremetal/semihost.c \
+    port/baremetal/libc.c $(FW_BOARD_SRC)
+ifeq ($(FW_APP),bringup)
+FW_SRC := $(FW_PORT_SRC) port/baremetal/bringup.c
+FW_SCENE_OBJ :=
+else
+FW_SRC := $(CORE_SRC) $(FW_PORT_SRC) port/baremetal/main.c
+FW_SCENE_OBJ := $(FW_BUILD)/scene.o
+endif
+FW_OBJ := $(FW_SRC:%.c=$(FW_BUILD)/%.o) $(FW_SCENE_OBJ)
+FW_CONFIG := $(FW_BUILD)/fw_config.h
+FW_FLAGS_STAMP := $(FW_BUILD)/cflags.txt
+
+# Rewrites $1 with the text on stdin only when it changed, so that changing
+# a variable rebuilds exactly what depends on it. The temporary file is
+# per process, so two builds that race here both end up correct.
+fw_update = cat >$1.$$$$ && if cmp -s $1.$$$$ $1; then rm -f $1.$$$$; \
+    else mv -f $1.$$$$ $1; fi
+
+.PHONY: firmware qemu size fw-check-board fw-force
+firmware: $(FW_ELF)
+
+fw-check-board:
+	@$(if $(FW_LD),true,echo "Unknown BOARD=$(BOARD); use an385, m0, \
+	    microbit, an505 or rv32" >&2; exit 1)
+	@command -v $(FW_CC) >/dev/null || { echo "$(FW_CC) not found" >&2; \
+	    exit 1; }
+
+$(FW_CONFIG): fw-force | fw-check-board
+	$(Q)mkdir -p $(@D)
+	$(Q)for v in '$(WIDTH)' '$(HEIGHT)' '$(SPP)' '$(FW_BRINGUP)'; do \
+	    case "$$v" in ''|*[!0-9]*) echo "WIDTH, HEIGHT, SPP and" \
+	        "FW_BRINGUP must be numbers, got '$$v'" >&2; exit 1;; esac; \
+	done
+	$(Q)$(if $(filter bringup,$(FW_APP)),true,test -f '$(SCENE)') || { \
+	    echo "SCENE=$(SCENE): no such file" >&2; exit 1; }
+	$(Q)printf '%s\n' '/* Generated by mk/firmware.mk. */' \
+	    '#define FW_SCENE_FILE "$(abspath $(SCENE))"' \
+	    '#define FW_WIDTH $(WIDTH)' '#define FW_HEIGHT $(HEIGHT)' \
+	    '#define FW_SPP $(SPP)' '#define FW_BRINGUP $(FW_BRINGUP)' \
+	    | $(call fw_update,$@)
+
+$(FW_FLAGS_STAMP): fw-force | fw-check-board
+	$(Q)mkdir -p $(@D)
+	$(Q)echo '$(FW_CC) $(FW_CFLAGS) -T $(FW_LD)' | $(call fw_update,$@)
+
+$(FW_BUILD)/core/%.o: core/%.c $(FW_FLAGS_STAMP)
+	@$(if $(Q),echo "  CC      $< ($(BOARD))")
+	$(Q)mkdir -p $(@D)
+	$(Q)$(FW_CC) $(FW_CFLAGS) $(CORE_WARN) -Icore -MMD -MP -c $< -o $@
+
+# libc.c must not have its loops turned back into calls to itself.
+$(FW_BUILD)/port/baremetal/libc.o: FW_EXTRA := -fno-tree-loop-distribute-patterns
+$(FW_BUILD)/port/baremetal/main.o: $(FW_CONFIG)
+$(FW_BUILD)/port/baremetal/bringup.o: $(FW_CONFIG)
+
+$(FW_BUILD)/port/baremetal/%.o: port/baremetal/%.c $(FW_FLAGS_STAMP)
+	@$(if $(Q),echo "  CC      $< ($(BOARD))")
+	$(Q)mkdir -p $(@D)
+	$(Q)$(FW_CC) $(FW_CFLAGS) $(FW_EXTRA) $(WARN) -Icore -Iport/baremetal \
+	    -I$(FW_BUILD) -MMD -MP -c $< -o $@
+
+$(FW_BUILD)/scene.o: port/baremetal/scene.S $(FW_CONFIG) $(SCENE) \
+                     $(FW_FLAGS_STAMP)
+	@$(if $(Q),echo "  AS      $(SCENE) ($(BOARD))")
+	$(Q)$(FW_CC) $(FW_CPU) -I$(FW_BUILD) -c $< -o $@
+
+$(FW_ELF): $(FW_OBJ) $(FW_LD) $(FW_FLAGS_STAMP)
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(FW_CC) $(FW_LDFLAGS) $(FW_OBJ) -o $@ -lgcc
+
+-include $(patsubst %.o,%.d,$(filter %.o,$(FW_OBJ)))
+
+# ---- Run and measure ----------------------------------------------------------
+
+# The image goes to out.ppm (semihosting stdout), the figures to stderr
+# (semihosting stderr) and to qemu.log. The exit status is the firmware's.
+qemu: $(FW_ELF)
+	$(Q)rc=0; timeout $(QEMU_TIMEOUT) $(FW_QEMU) \
+	    -icount shift=$(FW_ICOUNT),align=off,sleep=off -kernel $< \
+	    </dev/null >$(FW_BUILD)/out.ppm 2>$(FW_BUILD)/qemu.log || rc=$$?; \
+	cat $(FW_BUILD)/qemu.log >&2; \
+	if [ $$rc -eq 124 ]; then \
+	    echo "qemu: no exit after $(QEMU_TIMEOUT) s (hang?)" >&2; \
+	elif [ $$rc -ne 0 ]; then \
+	    echo "qemu: firmware exit status $$rc (see port/baremetal/port.h)" >&2; \
+	else \
+	    awk '/^instructions /{i=$$2} /^pixels /{p=$$2} END{if (i > 0 && p > 0) \
+	        printf "instructions_per_pixel %.1f\n", i / p}' \
+	        $(FW_BUILD)/qemu.log >&2; \
+	    echo "wrote $(FW_BUILD)/out.ppm" >&2; \
+	fi; \
+	exit $$rc
+
+# Flash holds .text, .rodata (with the scene text), .ARM.exidx and the
+# initial .data; RAM holds .data, .bss and the reserved stack.
+size: $(FW_ELF)
+	$(Q)$(FW_SIZE) -A $< | awk -v board=$(BOARD) ' \
+	    $$1 == ".text" { t = $$2 } $$1 == ".rodata" { r = $$2 } \
+	    $$1 == ".ARM.exidx" { x = $$2 } $$1 == ".data" { d = $$2 } \
+	    $$1 == ".bss" { b = $$2 } $$1 == ".stack" { s = $$2 } \
+	    END { \
+	        printf "%s: flash %d bytes (text %d, rodata %d, exidx %d, data %d)\n", \
+	            board, t + r + x + d, t, r, x, d; \
+	        printf "%s: ram %d bytes (data %d, bss %d), stack %d reserved, total %d\n", \
+	            board, d + b, d, b, s, d + b + s }'

@@ -1,0 +1,149 @@
+/*
+ * main.c: the fixtrace firmware. It parses the scene text embedded in the
+ * image (scene.S) with the same rt_parse() the host uses, renders it one
+ * scanline at a time and streams a binary PPM (P6) through port_write():
+ * there is no frame buffer, only one row. The figures go to the text
+ * channel as lines "name value":
+ *
+ *   instructions N   retired guest instructions from just before the first
+ *                    row to just after the last (rendering and output)
+ *   pixels N         width * height
+ *   stack_bytes N    stack high-water mark of the whole run
+ *   stack_reserved N stack size reserved by the linker script
+ *
+ * Errors print "fixtrace: ..." on the text channel and exit with a code
+ * from port.h (2 parse, 3 options, 4 render, 5 stack).
+ *
+ * The build (mk/firmware.mk) generates fw_config.h with FW_WIDTH,
+ * FW_HEIGHT and FW_SPP; 0 means "the scene's default".
+ */
+#include "port.h"
+#include "fw_config.h"
+#include "rt_parse.h"
+#include "rt_render.h"
+
+/* The scene text and its length in bytes (scene.S). */
+extern const char fw_scene_text[];
+extern const uint32_t fw_scene_len;
+
+/* A stack that came this close to its reserved bottom may have overflowed
+ * (a frame can skip over a few painted words). */
+#define STACK_GUARD 64u
+
+/* Widest row the firmware can send; boards short of RAM set it lower than
+ * RT_MAX_WIDTH (mk/firmware.mk). */
+#ifndef FW_ROW_PIXELS
+#define FW_ROW_PIXELS RT_MAX_WIDTH
+#endif
+
+/* Both live in .bss, so `make size` accounts for them. */
+static rt_scene scene;
+static uint8_t row_buf[FW_ROW_PIXELS * 3];
+
+static void log_status(const char *what, rt_status st)
+{
+    port_log("fixtrace: ");
+    port_log(what);
+    port_log(" failed, status -");
+    port_log_u64((uint64_t)-(int64_t)st);
+    port_log("\n");
+}
+
+/* Hands a finished row straight to the output; the row buffer is ours
+ * again when port_write() returns. */
+static int send_row(void *ctx, int y, const uint8_t *row, size_t nbytes)
+{
+    (void)ctx;
+    (void)y;
+    port_write(row, nbytes);
+    return 0;
+}
+
+/* "P6\n<w> <h>\n255\n", as the host writes it. */
+static void send_header(unsigned w, unsigned h)
+{
+    char buf[32];
+    char *p = buf + sizeof buf;
+    const char *tail = "\n255\n";
+    unsigned n;
+    p -= 5;
+    for (n = 0; n < 5; n++)
+        p[n] = tail[n];
+    do {
+        *--p = (char)('0' + h % 10);
+        h /= 10;
+    } while (h != 0);
+    *--p = ' ';
+    do {
+        *--p = (char)('0' + w % 10);
+        w /= 10;
+    } while (w != 0);
+    *--p = '\n';
+    *--p = '6';
+    *--p = 'P';
+    port_write(p, (size_t)(buf + sizeof buf - p));
+}
+
+int main(void)
+{
+    rt_parse_error err;
+    rt_options opt;
+    rt_status st;
+
+    port_init();
+    st = rt_parse(fw_scene_text, fw_scene_len, &scene, &err);
+    if (st != RT_OK) {
+        port_log("fixtrace: scene line ");
+        port_log_u64(err.line);
+        port_log(" col ");
+        port_log_u64(err.col);
+        port_log(": ");
+        port_log(err.msg);
+        port_log("\n");
+        return PORT_EXIT_PARSE;
+    }
+
+    rt_options_from_scene(&opt, &scene);
+    if (FW_WIDTH > 0)
+        opt.width = FW_WIDTH;
+    if (FW_HEIGHT > 0)
+        opt.height = FW_HEIGHT;
+    if (FW_SPP > 0)
+        opt.spp = FW_SPP;
+    if (opt.width > RT_MAX_WIDTH || opt.height > RT_MAX_HEIGHT ||
+        rt_row_bytes(&opt) > sizeof row_buf) {
+        port_log("fixtrace: image ");
+        port_log_u64(opt.width);
+        port_log("x");
+        port_log_u64(opt.height);
+        port_log(" is larger than this build allows: ");
+        port_log_u64(sizeof row_buf / 3 < RT_MAX_WIDTH ? sizeof row_buf / 3
+                                                       : RT_MAX_WIDTH);
+        port_log("x");
+        port_log_u64(RT_MAX_HEIGHT);
+        port_log(" (set WIDTH and HEIGHT)\n");
+        return PORT_EXIT_OPTIONS;
+    }
+
+    send_header(opt.width, opt.height);
+    uint64_t t0 = port_cycles();
+    st = rt_render_rows(&scene, &opt, 0, opt.height, row_buf, send_row, 0,
+                        0);
+    uint64_t t1 = port_cycles();
+    if (st != RT_OK) {
+        log_status("rt_render_rows", st);
+        return st == RT_ERR_ARG ? PORT_EXIT_OPTIONS : PORT_EXIT_RENDER;
+    }
+
+    size_t used = port_stack_used();
+    port_log_value("instructions", port_cycles_to_insns(t1 - t0));
+    port_log_value("pixels", (uint64_t)opt.width * opt.height);
+    port_log_value("stack_bytes", used);
+    port_log_value("stack_reserved", port_stack_size());
+    if (used + STACK_GUARD > port_stack_size()) {
+        port_log("fixtrace: stack overflow (raise STACK_SIZE in the "
+                 "linker script)\n");
+        return PORT_EXIT_STACK;
+    }
+    return PORT_EXIT_OK;
+}

@@ -1,0 +1,79 @@
+/*
+ * port.h: the services the bare-metal firmware needs from a board. Each
+ * function here must be defined for each board (in board_<name>.c, or in
+ * the shared semihost.c for the output channels); mk/firmware.mk picks the
+ * files. A new board means one board file, one linker script and a few
+ * lines in mk/firmware.mk.
+ */
+#ifndef PORT_H
+#define PORT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* Exit codes of the firmware (QEMU passes them through as its own status).
+ * 0 is success; anything else names what went wrong. */
+enum {
+    PORT_EXIT_OK = 0,
+    PORT_EXIT_PARSE = 2,     /* rt_parse() rejected the embedded scene */
+    PORT_EXIT_OPTIONS = 3,   /* size or spp outside this build's limits */
+    PORT_EXIT_RENDER = 4,    /* rt_render_rows() returned an error */
+    PORT_EXIT_STACK = 5,     /* the stack came within 64 bytes of its end */
+    PORT_EXIT_HARDFAULT = 101, /* HardFault (every fault on Cortex-M0) */
+    PORT_EXIT_MEMFAULT = 102,  /* MemManage */
+    PORT_EXIT_BUSFAULT = 103,  /* BusFault */
+    PORT_EXIT_USAGEFAULT = 104, /* UsageFault */
+    PORT_EXIT_SECUREFAULT = 105, /* SecureFault (ARMv8-M) */
+    PORT_EXIT_TRAP = 106       /* NMI, a stray interrupt or a RISC-V trap */
+};
+
+/* Sets up the output channels and starts the cycle counter. Called first
+ * thing in main(), after the startup code has set up .data and .bss. */
+void port_init(void);
+
+/* Sends n bytes of image data; binary-clean, nothing else goes to this
+ * channel. Blocks until the bytes are handed on; the buffer is the
+ * caller's again on return. */
+void port_write(const void *buf, size_t n);
+
+/* Sends NUL-terminated text for people (figures, errors) on a channel
+ * separate from the image. */
+void port_log(const char *s);
+
+/* Stops the program with the given exit status. Never returns. */
+void port_exit(int code) __attribute__((noreturn));
+
+/* The board's free-running cycle counter as a 64-bit count that does not
+ * wrap within a run. Boards whose fast counter is 32 bits pair it with a
+ * slow one to get the upper bits, so no periodic calls are needed. */
+uint64_t port_cycles(void);
+
+/* Converts a difference of two port_cycles() values to retired guest
+ * instructions. Exact under QEMU's -icount settings that `make qemu` uses
+ * for this board (see port/baremetal/README.md). */
+uint64_t port_cycles_to_insns(uint64_t cycles);
+
+/* ---- Helpers shared by the boards and the firmware --------------------- */
+
+/* Opens the semihosting channels (semihost.c, which also defines
+ * port_write, port_log and port_exit). Boards call it from port_init(). */
+void port_semihost_init(void);
+
+/* Logs v in decimal on the text channel (common.c). */
+void port_log_u64(uint64_t v);
+
+/* Logs one figure as a line "name value\n" on the text channel (common.c). */
+void port_log_value(const char *name, uint64_t v);
+
+/* Fills the unused stack below the current stack pointer with a pattern
+ * (common.c). The startup code calls it before main(). */
+void port_stack_paint(void);
+
+/* Bytes of stack ever used since port_stack_paint(): the distance from the
+ * top of the stack to the lowest word that no longer holds the pattern. */
+size_t port_stack_used(void);
+
+/* Bytes reserved for the stack by the linker script. */
+size_t port_stack_size(void);
+
+#endif /* PORT_H */

@@ -1,0 +1,232 @@
+#!/usr/bin/env bash
+# The firmware on every QEMU board (an385, m0, microbit, an505, rv32):
+# rendering on the device gives the same bytes as the host, for the seed
+# scene and one other, at 48x36; each board's instruction counter is exact
+# (a loop of known length); a stack overflow ends the run with a fault code
+# instead of hanging it; a bad embedded scene exits 2 with a message; the
+# M0 images use no soft-float helpers; and the micro:bit build fits in its
+# 16 KB of RAM and renders the seed scene at 320x240.
+#
+# Boards run in parallel, each with its own build/<board>/ directory. A
+# board whose cross compiler or QEMU is missing is skipped, with the
+# package to install.
+set -u
+cd "$(dirname "$0")/.."
+FT=${FIXTRACE:-build/posix/fixtrace}
+MK=${MAKE:-make}
+SEED=${FW_TEST_SEED:-scenes/seed.scene}
+W=48 H=36
+TIMEOUT=${FW_TEST_TIMEOUT:-60}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+# The other scene: FW_TEST_SCENE, else scenes/primitives.scene (every
+# shape and cap variant; the seed has the effects), else the first scene
+# that fits the micro:bit build's capacities (mk/firmware.mk).
+pick_other() {
+    local s
+    for s in "${FW_TEST_SCENE:-}" scenes/primitives.scene scenes/*.scene; do
+        [ -f "$s" ] && [ "$s" != "$SEED" ] || continue
+        awk '$1 ~ /^(sphere|quad|box|cylinder|cone)$/ { o++ }
+             $1 == "material" { m++ } $1 == "light" { l++ }
+             END { exit !(o <= 16 && m <= 12 && l <= 2) }' "$s" &&
+            { echo "$s"; return; }
+    done
+    echo "$SEED"
+}
+OTHER=$(pick_other)
+
+# Soft-float and soft-double helpers of libgcc (ARM EABI and generic names).
+SOFT_FLOAT='__aeabi_([fd][a-z0-9]+|[a-z0-9]+2[fd]z?)$|__(add|sub|mul|div|neg|cmp|eq|ne|lt|le|gt|ge|unord|extend|trunc)[sdtx]f[0-9]*$|__(float|fix)[a-z]*[sdtx]f[a-z0-9]*$'
+
+# Per-board results go to $tmp/<board>.res, one line per check: "ok" or
+# "FAILED: ...", or a "SKIPPED: ..." line.
+res() { echo "$*" >>"$tmp/$b.res"; }
+
+# fw TARGET ARGS...: run make for this board, output to $tmp/$b.log.
+fw() {
+    "$MK" -s "$@" BOARD="$b" >"$tmp/$b.log" 2>&1
+}
+
+# run_qemu NAME TIMEOUT ARGS...: run the firmware; sets rc (124 = timeout).
+run_qemu() {
+    local name=$1 t=$2
+    shift 2
+    "$MK" -s qemu BOARD="$b" QEMU_TIMEOUT="$t" "$@" >"$tmp/$b.log" 2>&1
+    rc=$(sed -nE 's/^qemu: firmware exit status ([0-9]+).*/\1/p' \
+        "$tmp/$b.log" | tail -n 1)
+    grep -q '^qemu: no exit after' "$tmp/$b.log" && rc=124
+    rc=${rc:-0}
+    if [ "$rc" = 124 ]; then
+        res "FAILED: $b $name: QEMU did not exit within $t s (hang)"
+    elif [ "$rc" != 0 ] && [ -z "${want_rc:-}" ]; then
+        res "FAILED: $b $name: firmware exit status $rc (101-106: fault," \
+            "2: parse error, 5: stack overflow): $(grep -v '^qemu:' \
+            "$tmp/$b.log" | head -c 300)"
+    fi
+}
+
+# render NAME SCENE W H REF: build, run, compare with the host render.
+render() {
+    local name=$1 scene=$2 w=$3 h=$4 ref=$5 t=${6:-$TIMEOUT}
+    if ! fw firmware SCENE="$scene" WIDTH="$w" HEIGHT="$h"; then
+        res "FAILED: $b $name: build failed: $(head -c 600 "$tmp/$b.log")"
+        return 1
+    fi
+    run_qemu "$name" "$t" SCENE="$scene" WIDTH="$w" HEIGHT="$h"
+    [ "$rc" = 0 ] || return 1
+    if cmp -s "build/$b/out.ppm" "$ref"; then
+        res ok
+        echo "$b $name: $(tr '\n' ' ' <"build/$b/qemu.log")" >>"$tmp/$b.info"
+    else
+        res "FAILED: $b $name: device image differs from the host's" \
+            "($(cmp "build/$b/out.ppm" "$ref" 2>&1 | head -n 1))"
+    fi
+}
+
+run_board() {
+    b=$1
+    : >"$tmp/$b.res"
+    # Another run of this suite (or of make test) in the same tree would
+    # rebuild build/<board>/ under our feet: take turns per board.
+    mkdir -p "build/$b"
+    if command -v flock >/dev/null; then
+        exec 9>"build/$b/.suite.lock"
+        flock 9
+    fi
+    render "$(basename "$SEED" .scene) ${W}x$H" "$SEED" $W $H "$tmp/seed.ppm"
+    render "$(basename "$OTHER" .scene) ${W}x$H" "$OTHER" $W $H \
+        "$tmp/other.ppm"
+
+    # The counter: a two-instruction loop of 10^6 turns (bringup.c).
+    if fw firmware FW_APP=bringup FW_BRINGUP=0; then
+        run_qemu "counter check" "$TIMEOUT" FW_APP=bringup FW_BRINGUP=0
+        got=$(sed -nE 's/^loop_instructions ([0-9]+)$/\1/p' "$tmp/$b.log")
+        if [ "$rc" = 0 ] && [ "$got" = 2000000 ]; then
+            res ok
+        elif [ "$rc" = 0 ]; then
+            res "FAILED: $b counter: a 2000000-instruction loop measured" \
+                "'$got'"
+        fi
+    else
+        res "FAILED: $b bringup build: $(head -c 600 "$tmp/$b.log")"
+    fi
+
+    # Unbounded recursion must end in a fault exit, not a hang or exit 0.
+    if fw firmware FW_APP=bringup FW_BRINGUP=2; then
+        want_rc=fault run_qemu "stack overflow" "$TIMEOUT" FW_APP=bringup \
+            FW_BRINGUP=2
+        case $rc in
+        10[1-6]) res ok ;;
+        124) ;;
+        *) res "FAILED: $b stack overflow: exit status $rc, want 101-106" ;;
+        esac
+    else
+        res "FAILED: $b bringup build: $(head -c 600 "$tmp/$b.log")"
+    fi
+
+    # No soft-float helper may be linked into the renderer.
+    local elf=build/$b/fixtrace.elf nm=arm-none-eabi-nm
+    [ "$b" = rv32 ] && nm=riscv64-unknown-elf-nm
+    if fw firmware SCENE="$SEED" WIDTH=$W HEIGHT=$H; then
+        sf=$("$nm" "$elf" | awk '{print $NF}' | grep -E "$SOFT_FLOAT")
+        if [ -z "$sf" ]; then
+            res ok
+        else
+            res "FAILED: $b links soft-float helpers: $(echo $sf)"
+        fi
+    fi
+
+    case $b in
+    an385)
+        # A scene the device cannot parse: exit 2 and say where.
+        printf 'camera eye 0 0 -5 look 0 0 0 up 0 1 0 fov 60\nsphere center 0 0 0 radius 1 material nope\n' >"$tmp/bad.scene"
+        if fw firmware SCENE="$tmp/bad.scene"; then
+            want_rc=2 run_qemu "bad scene" "$TIMEOUT" SCENE="$tmp/bad.scene"
+            if [ "$rc" = 2 ] && grep -q 'scene line 2 col' "$tmp/$b.log"; then
+                res ok
+            else
+                res "FAILED: $b bad scene: exit $rc, want 2 with a line" \
+                    "number: $(head -c 300 "$tmp/$b.log")"
+            fi
+        fi
+        ;;
+    microbit)
+        # Everything, stack included, in 16 KB of RAM; the seed scene at
+        # 320x240 (which also checks the stack high-water mark on exit).
+        if render "$(basename "$SEED" .scene) 320x240" "$SEED" 320 240 \
+            "$tmp/seed320.ppm" 120; then
+            fw size SCENE="$SEED" WIDTH=320 HEIGHT=240
+            total=$(sed -nE 's/.*, total ([0-9]+)$/\1/p' "$tmp/$b.log")
+            if [ -n "$total" ] && [ "$total" -le 16384 ]; then
+                res ok
+            else
+                res "FAILED: microbit RAM: '$total' bytes, want <= 16384:" \
+                    "$(cat "$tmp/$b.log")"
+            fi
+        fi
+        ;;
+    esac
+}
+
+# Host references (the same core on the host).
+if [ ! -x "$FT" ]; then
+    echo "FAILED: $FT not built (run make first)"
+    echo "0 passed, 1 failed"
+    exit 1
+fi
+for r in "seed $SEED $W $H" "other $OTHER $W $H" "seed320 $SEED 320 240"; do
+    set -- $r
+    if ! "$FT" -q -W "$3" -H "$4" -o "$tmp/$1.ppm" "$2" 2>"$tmp/host.err"
+    then
+        echo "FAILED: host render of $2: $(cat "$tmp/host.err")"
+        echo "0 passed, 1 failed"
+        exit 1
+    fi
+done
+echo "scenes: $SEED and $OTHER"
+
+boards=""
+for b in an385 m0 microbit an505 rv32; do
+    case $b in
+    rv32) tools="riscv64-unknown-elf-gcc qemu-system-riscv32"
+        pkgs="gcc-riscv64-unknown-elf qemu-system-misc" ;;
+    *) tools="arm-none-eabi-gcc qemu-system-arm"
+        pkgs="gcc-arm-none-eabi qemu-system-arm" ;;
+    esac
+    missing=""
+    for t in $tools; do
+        command -v "$t" >/dev/null || missing="${missing:+$missing }$t"
+    done
+    if [ -n "$missing" ]; then
+        echo "SKIPPED: $b firmware ($missing missing; install $pkgs)" \
+            >"$tmp/$b.res"
+    else
+        boards="$boards $b"
+    fi
+done
+
+start=$SECONDS
+for b in $boards; do
+    run_board "$b" &
+done
+wait
+
+pass=0 fail=0 skip=0
+for b in an385 m0 microbit an505 rv32; do
+    [ -f "$tmp/$b.info" ] && cat "$tmp/$b.info"
+    while IFS= read -r line; do
+        case $line in
+        ok) pass=$((pass + 1)) ;;
+        SKIPPED:*) skip=$((skip + 1)); echo "$line" ;;
+        *) fail=$((fail + 1)); echo "$line" ;;
+        esac
+    done <"$tmp/$b.res"
+done
+echo "boards took $((SECONDS - start)) s"
+if [ "$skip" -gt 0 ]; then
+    echo "$pass passed, $fail failed, $skip skipped"
+else
+    echo "$pass passed, $fail failed"
+fi
+[ "$fail" -eq 0 ]
