@@ -56,6 +56,13 @@
 #define RT_STATS 1
 #endif
 
+/* 1: camera rays test only the objects their pixel row and column can
+ * reach (rt_cull.c; costs RT_MAX_OBJECTS * 6 bytes of stack). 0: every
+ * camera ray tests every object. The image is the same either way. */
+#ifndef RT_CULL
+#define RT_CULL 1
+#endif
+
 /* ---- Effect removal (default off; see docs/effects.md) ------------------
  * Each flag removes the code for one effect. A scene that needs a removed
  * effect is refused by rt_scene_check_build(), never rendered wrongly.

@@ -122,12 +122,7 @@ const char *rt_feature_name(uint32_t bit)
     return "unknown";
 }
 
-/* Per-frame camera constants. */
-typedef struct {
-    fx_vec3 w, right, up;
-    int64_t step; /* half / (n H) with 32 fractional bits */
-    unsigned n;   /* grid side */
-} cam_frame;
+typedef rt_cam_frame cam_frame;
 
 static void cam_setup(cam_frame *cf, const rt_scene *s, const rt_options *o,
                       unsigned n)
@@ -186,9 +181,33 @@ static fx_t clamp01(fx_t v)
     return v < 0 ? 0 : (v > FX_ONE ? FX_ONE : v);
 }
 
+/* Objects camera rays of one pixel row may hit (rt_cull). */
+typedef struct {
+    rt_span span[RT_MAX_OBJECTS];
+    unsigned count;
+} row_spans;
+
+static void row_setup(row_spans *rs, const rt_tracer *tr, const cam_frame *cf,
+                      const rt_options *o, unsigned y)
+{
+    const rt_scene *s = tr->scene;
+#if RT_CULL
+    rs->count = rt_cull_row(s, cf, o->width, o->height, y, rs->span);
+#else
+    (void)cf, (void)o, (void)y;
+    for (unsigned i = 0; i < s->n_objects; i++) {
+        rs->span[i].obj = (uint16_t)i;
+        rs->span[i].x0 = 0;
+        rs->span[i].x1 = INT16_MAX;
+    }
+    rs->count = s->n_objects;
+#endif
+}
+
 /* One pixel: the mean of its n x n samples (cf->n), rounded to 8 bits. */
 static void pixel(const rt_tracer *tr, const cam_frame *cf,
-                  const rt_options *o, unsigned x, unsigned y, uint8_t rgb8[3])
+                  const row_spans *rs, const rt_options *o, unsigned x,
+                  unsigned y, uint8_t rgb8[3])
 {
     const unsigned n = cf->n, spp = n * n;
     const int32_t wn = (int32_t)(o->width * n), hn = (int32_t)(o->height * n);
@@ -203,7 +222,7 @@ static void pixel(const rt_tracer *tr, const cam_frame *cf,
                        fx_v3_normalize(fx_v3_madd(base, cf->right, sx)),
                        tr->feat);
             RT_COUNT(tr, primary);
-            rt_rgb c = rt_trace(tr, &r, 0, 0xFFFFu);
+            rt_rgb c = rt_trace_camera(tr, &r, rs->span, rs->count, x);
             sum[0] += clamp01(c.r);
             sum[1] += clamp01(c.g);
             sum[2] += clamp01(c.b);
@@ -230,11 +249,14 @@ size_t rt_buffer_bytes(const rt_options *o)
  * centre samples of rows y-1..y+1 live in the scratch part of row_buf, so a
  * band computes the rows around it too and any banding gives the same
  * bytes. */
-static rt_status render_adaptive(const rt_tracer *tr, const cam_frame *cf1,
-                                 const cam_frame *cfn, const rt_options *o,
-                                 int y0, int y1, uint8_t *row_buf,
-                                 rt_row_fn fn, void *ctx)
+static rt_status render_adaptive(const rt_tracer *tr, const cam_frame *cfn,
+                                 const rt_options *o, int y0, int y1,
+                                 uint8_t *row_buf, rt_row_fn fn, void *ctx)
 {
+    cam_frame cf1_store;
+    const cam_frame *cf1 = &cf1_store;
+    row_spans rs;
+    cam_setup(&cf1_store, tr->scene, o, 1);
     const unsigned w = o->width;
     uint8_t *slot[3];
     int slot_y[3] = { -1, -1, -1 };
@@ -248,12 +270,14 @@ static rt_status render_adaptive(const rt_tracer *tr, const cam_frame *cf1,
                                                          : y + d);
             int k = yy % 3;
             if (slot_y[k] != yy) {
+                row_setup(&rs, tr, cf1, o, (unsigned)yy);
                 for (unsigned x = 0; x < w; x++)
-                    pixel(tr, cf1, o, x, (unsigned)yy, slot[k] + 3 * x);
+                    pixel(tr, cf1, &rs, o, x, (unsigned)yy, slot[k] + 3 * x);
                 slot_y[k] = yy;
             }
             near[d + 1] = slot[k];
         }
+        row_setup(&rs, tr, cfn, o, (unsigned)y);
         for (unsigned x = 0; x < w; x++) {
             const uint8_t *c = near[1] + 3 * x;
             unsigned contrast = 0;
@@ -272,7 +296,7 @@ static rt_status render_adaptive(const rt_tracer *tr, const cam_frame *cf1,
             }
             uint8_t rgb8[3] = { c[0], c[1], c[2] };
             if (contrast > o->adaptive)
-                pixel(tr, cfn, o, x, (unsigned)y, rgb8);
+                pixel(tr, cfn, &rs, o, x, (unsigned)y, rgb8);
             put_pixel(row_buf, o, x, (unsigned)y, rgb8);
         }
         if (fn(ctx, y, row_buf, rt_row_bytes(o)) != 0)
@@ -281,6 +305,10 @@ static rt_status render_adaptive(const rt_tracer *tr, const cam_frame *cf1,
     return RT_OK;
 }
 #endif
+
+static rt_status render_plain(const rt_tracer *tr, const cam_frame *cf,
+                              const rt_options *o, int y0, int y1,
+                              uint8_t *row_buf, rt_row_fn fn, void *ctx);
 
 rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
                          int y1, uint8_t *row_buf, rt_row_fn fn, void *ctx,
@@ -304,16 +332,23 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
     cam_frame cf;
     cam_setup(&cf, s, o, n);
 #if !defined(RT_NO_SUPERSAMPLING)
-    if (o->adaptive && n > 1) {
-        cam_frame cf1;
-        cam_setup(&cf1, s, o, 1);
-        return render_adaptive(&tr, &cf1, &cf, o, y0, y1, row_buf, fn, ctx);
-    }
+    if (o->adaptive && n > 1)
+        return render_adaptive(&tr, &cf, o, y0, y1, row_buf, fn, ctx);
 #endif
+    return render_plain(&tr, &cf, o, y0, y1, row_buf, fn, ctx);
+}
+
+/* Every pixel gets its cf->n x cf->n grid. */
+static rt_status render_plain(const rt_tracer *tr, const cam_frame *cf,
+                              const rt_options *o, int y0, int y1,
+                              uint8_t *row_buf, rt_row_fn fn, void *ctx)
+{
+    row_spans rs;
     for (int y = y0; y < y1; y++) {
+        row_setup(&rs, tr, cf, o, (unsigned)y);
         for (unsigned x = 0; x < o->width; x++) {
             uint8_t rgb8[3];
-            pixel(&tr, &cf, o, x, (unsigned)y, rgb8);
+            pixel(tr, cf, &rs, o, x, (unsigned)y, rgb8);
             put_pixel(row_buf, o, x, (unsigned)y, rgb8);
         }
         if (fn(ctx, y, row_buf, rt_row_bytes(o)) != 0)

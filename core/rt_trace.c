@@ -110,16 +110,11 @@ static fx_vec3 reflect_dir(fx_vec3 d, fx_vec3 n)
 }
 #endif
 
-rt_rgb rt_trace(const rt_tracer *tr, const rt_ray *r, unsigned depth,
-                unsigned skip)
+/* Colour of the hit (object oi, part, distance t) seen along r. */
+static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
+                    uint16_t oi, uint8_t part, fx_t t)
 {
     const rt_scene *s = tr->scene;
-    fx_t t;
-    uint16_t oi = 0;
-    uint8_t part = 0;
-    if (!nearest(tr, r, skip, &t, &oi, &part))
-        return s->background;
-
     const rt_object *o = &s->obj[oi];
     const rt_material *m = &s->mat[o->material];
     fx_vec3 p = fx_v3_madd(r->o, r->d, t);
@@ -218,4 +213,41 @@ rt_rgb rt_trace(const rt_tracer *tr, const rt_ray *r, unsigned depth,
     }
 #endif
     return c;
+}
+
+rt_rgb rt_trace(const rt_tracer *tr, const rt_ray *r, unsigned depth,
+                unsigned skip)
+{
+    fx_t t;
+    uint16_t oi = 0;
+    uint8_t part = 0;
+    if (!nearest(tr, r, skip, &t, &oi, &part))
+        return tr->scene->background;
+    return shade(tr, r, depth, oi, part, t);
+}
+
+rt_rgb rt_trace_camera(const rt_tracer *tr, const rt_ray *r,
+                       const rt_span *spans, unsigned n_spans, unsigned x)
+{
+    const rt_scene *s = tr->scene;
+    fx_t best = FX_MAX;
+    uint16_t oi = 0;
+    uint8_t part = 0;
+    int found = 0;
+    for (unsigned k = 0; k < n_spans; k++) {
+        fx_t ti;
+        uint8_t pi;
+        if (x < (unsigned)spans[k].x0 || x > (unsigned)spans[k].x1)
+            continue;
+        RT_COUNT(tr, tests);
+        if (rt_intersect(&s->obj[spans[k].obj], r, RT_EPS, best, &ti, &pi)) {
+            best = ti;
+            oi = spans[k].obj;
+            part = pi;
+            found = 1;
+        }
+    }
+    if (!found)
+        return s->background;
+    return shade(tr, r, 0, oi, part, best);
 }

@@ -2,7 +2,7 @@
 #ifndef RT_TRACE_H
 #define RT_TRACE_H
 
-#include "rt_internal.h"
+#include "rt_cull.h"
 
 typedef struct {
     const rt_scene *scene;
@@ -29,5 +29,11 @@ void rt_ray_set(rt_ray *r, fx_vec3 o, fx_vec3 d, uint32_t feat);
  * most tr->max_depth <= RT_MAX_DEPTH. */
 rt_rgb rt_trace(const rt_tracer *tr, const rt_ray *r, unsigned depth,
                 unsigned skip);
+
+/* Colour seen along camera ray r of pixel column x, testing only the
+ * objects whose row span covers x (rt_cull_row). Same result as rt_trace
+ * (depth 0, nothing skipped). */
+rt_rgb rt_trace_camera(const rt_tracer *tr, const rt_ray *r,
+                       const rt_span *spans, unsigned n_spans, unsigned x);
 
 #endif /* RT_TRACE_H */
