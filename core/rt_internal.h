@@ -15,9 +15,8 @@
 #define RT_PAR_Q32 ((int64_t)1 << 16)
 
 typedef struct {
-    fx_vec3 o;   /* origin */
-    fx_vec3 d;   /* unit direction */
-    fx_vec3 inv; /* 1 / d per component, saturated (boxes only) */
+    fx_vec3 o; /* origin */
+    fx_vec3 d; /* unit direction */
 } rt_ray;
 
 /* Ray-object intersection: the nearest t with tmin < t < tmax. Returns 1

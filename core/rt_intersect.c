@@ -19,11 +19,13 @@
 #endif
 
 #if RT_ANY_SHAPE
-/* Closest approach of the ray to the bounding sphere (c, r). Returns 0 on
- * a miss; else *tca (Q16.16, may exceed the fx_t range), *thc (half chord)
- * and *h = c - (o + tca d), the offset from the closest point to c. */
-static int bsphere(fx_vec3 c, fx_t r, const rt_ray *ray, int64_t *tca,
-                   int64_t *thc, int64_t h[3])
+/* Closest approach of the ray to the bounding sphere (c, r). Returns 0 when
+ * the ray misses it or meets it only outside (tmin, tmax); else *tca
+ * (Q16.16, may exceed the fx_t range), *disc = r^2 - |h|^2 (Q32.32, the
+ * squared half chord) and h = c - (o + tca d). Cheap rejections come first:
+ * most tests end at the first comparison. */
+static int bsphere(fx_vec3 c, fx_t r, const rt_ray *ray, fx_t tmin,
+                   fx_t tmax, int64_t *tca, uint64_t *disc, int64_t h[3])
 {
     int64_t ox = (int64_t)c.x - ray->o.x;
     int64_t oy = (int64_t)c.y - ray->o.y;
@@ -31,6 +33,8 @@ static int bsphere(fx_vec3 c, fx_t r, const rt_ray *ray, int64_t *tca,
     /* |oc| < 2^33 and |d| <= 2^16, so each product stays below 2^49. */
     int64_t q = ox * ray->d.x + oy * ray->d.y + oz * ray->d.z;
     int64_t t = (q + 0x8000) >> 16;
+    if (t + r <= tmin || t - r >= tmax)
+        return 0; /* wholly behind the origin or beyond tmax */
     h[0] = ox - ((t * ray->d.x + 0x8000) >> 16);
     h[1] = oy - ((t * ray->d.y + 0x8000) >> 16);
     h[2] = oz - ((t * ray->d.z + 0x8000) >> 16);
@@ -43,7 +47,7 @@ static int bsphere(fx_vec3 c, fx_t r, const rt_ray *ray, int64_t *tca,
     if (h2 > r2)
         return 0;
     *tca = t;
-    *thc = fx_sqrt_q32(r2 - h2);
+    *disc = r2 - h2;
     return 1;
 }
 
@@ -63,10 +67,12 @@ static int take(int64_t t, fx_t tmin, fx_t *best)
 static int hit_sphere(const rt_object *o, const rt_ray *r, fx_t tmin,
                       fx_t tmax, fx_t *t, uint8_t *part)
 {
-    int64_t tca, thc, h[3];
+    int64_t tca, h[3];
+    uint64_t disc;
     fx_t best = tmax;
-    if (!bsphere(o->a, o->r, r, &tca, &thc, h))
+    if (!bsphere(o->a, o->r, r, tmin, tmax, &tca, &disc, h))
         return 0;
+    int64_t thc = fx_sqrt_q32(disc);
     if (!take(tca - thc, tmin, &best) && !take(tca + thc, tmin, &best))
         return 0;
     *t = best;
@@ -114,8 +120,10 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
 static int hit_box(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                    fx_t *t, uint8_t *part)
 {
-    const fx_t *lo = &o->a.x, *hi = &o->b.x;
-    const fx_t *org = &r->o.x, *inv = &r->inv.x;
+    const fx_t *lo = &o->a.x, *hi = &o->b.x, *org = &r->o.x;
+    /* 1/d only for rays that reach a box's bounding sphere. */
+    const fx_t inv[3] = { fx_recip(r->d.x), fx_recip(r->d.y),
+                          fx_recip(r->d.z) };
     fx_t tn = FX_MIN, tf = FX_MAX;
     int an = 0, af = 0;
     for (int i = 0; i < 3; i++) {
@@ -193,12 +201,11 @@ static int quadratic(fx_t a, fx_t b, fx_t c, fx_t root[2])
 static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
                        fx_t tmax, fx_t *t, uint8_t *part)
 {
-    int64_t tca, thc, h[3];
+    int64_t tca, h[3];
+    uint64_t disc;
     fx_t best = tmax, root[2];
     int k = o->ushift, found = 0, cone = o->kind == RT_CONE;
-    if (!bsphere(o->bc, o->br, r, &tca, &thc, h))
-        return 0;
-    if (tca + thc <= tmin || tca - thc >= tmax)
+    if (!bsphere(o->bc, o->br, r, tmin, tmax, &tca, &disc, h))
         return 0;
     /* Closest point on the ray, relative to the centre, in the frame. */
     fx_t px = to_frame(-h[0], k), py = to_frame(-h[1], k);
@@ -265,9 +272,9 @@ int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
 #if !defined(RT_NO_QUAD) || !defined(RT_NO_BOX)
     case RT_QUAD:
     case RT_BOX: {
-        int64_t tca, thc, h[3];
-        if (!bsphere(o->bc, o->br, r, &tca, &thc, h) ||
-            tca + thc <= tmin || tca - thc >= tmax)
+        int64_t tca, h[3];
+        uint64_t disc;
+        if (!bsphere(o->bc, o->br, r, tmin, tmax, &tca, &disc, h))
             return 0;
 #if !defined(RT_NO_QUAD)
         if (o->kind == RT_QUAD)

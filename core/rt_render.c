@@ -219,8 +219,7 @@ static void pixel(const rt_tracer *tr, const cam_frame *cf,
             fx_t sx = cam_offset(cf, (int32_t)(2 * x * n + 2 * i + 1) - wn);
             rt_ray r;
             rt_ray_set(&r, tr->scene->cam.eye,
-                       fx_v3_normalize(fx_v3_madd(base, cf->right, sx)),
-                       tr->feat);
+                       fx_v3_normalize(fx_v3_madd(base, cf->right, sx)));
             RT_COUNT(tr, primary);
             rt_rgb c = rt_trace_camera(tr, &r, rs->span, rs->count, x);
             sum[0] += clamp01(c.r);
@@ -325,6 +324,10 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
         return RT_ERR_ARG;
 
     rt_tracer tr;
+    uint16_t blocker[RT_MAX_LIGHTS];
+    for (unsigned i = 0; i < RT_MAX_LIGHTS; i++)
+        blocker[i] = 0xFFFFu;
+    tr.blocker = blocker;
     tr.scene = s;
     tr.max_depth = o->depth;
     tr.feat = rt_scene_features(s, o->spp);

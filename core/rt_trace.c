@@ -31,16 +31,10 @@ static rt_rgb rgb_mul(rt_rgb a, rt_rgb b)
     return rgb(fx_mul(a.r, b.r), fx_mul(a.g, b.g), fx_mul(a.b, b.b));
 }
 
-void rt_ray_set(rt_ray *r, fx_vec3 o, fx_vec3 d, uint32_t feat)
+void rt_ray_set(rt_ray *r, fx_vec3 o, fx_vec3 d)
 {
     r->o = o;
     r->d = d;
-#if !defined(RT_NO_BOX)
-    if (feat & RT_FEAT_BOX)
-        r->inv = fx_v3(fx_recip(d.x), fx_recip(d.y), fx_recip(d.z));
-#else
-    (void)feat;
-#endif
 }
 
 /* Nearest hit among all objects but `skip`. */
@@ -68,19 +62,29 @@ static int nearest(const rt_tracer *tr, const rt_ray *r, unsigned skip,
 }
 
 #if !defined(RT_NO_SHADOWS)
-/* Any blocker with RT_EPS < t < tmax: stops at the first. */
+/* Any blocker with RT_EPS < t < tmax: stops at the first. The light's last
+ * blocker is tried first (neighbouring shadow rays tend to share it); the
+ * answer does not depend on the order, only the count of tests does. */
 static int occluded(const rt_tracer *tr, const rt_ray *r, fx_t tmax,
-                    unsigned skip)
+                    unsigned skip, unsigned light)
 {
     const rt_scene *s = tr->scene;
+    fx_t ti;
+    uint8_t pi;
+    unsigned first = tr->blocker[light];
+    if (first < s->n_objects && first != skip) {
+        RT_COUNT(tr, tests);
+        if (rt_intersect(&s->obj[first], r, RT_EPS, tmax, &ti, &pi))
+            return 1;
+    }
     for (unsigned i = 0; i < s->n_objects; i++) {
-        fx_t ti;
-        uint8_t pi;
-        if (i == skip)
+        if (i == skip || i == first)
             continue;
         RT_COUNT(tr, tests);
-        if (rt_intersect(&s->obj[i], r, RT_EPS, tmax, &ti, &pi))
+        if (rt_intersect(&s->obj[i], r, RT_EPS, tmax, &ti, &pi)) {
+            tr->blocker[light] = (uint16_t)i;
             return 1;
+        }
     }
     return 0;
 }
@@ -157,10 +161,10 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
 #if !defined(RT_NO_SHADOWS)
         if (tr->feat & RT_FEAT_SHADOWS) {
             rt_ray sr;
-            rt_ray_set(&sr, p_out, ld, tr->feat);
+            rt_ray_set(&sr, p_out, ld);
             RT_COUNT(tr, shadow);
             if (occluded(tr, &sr, fx_sub(fx_v3_length(lv), RT_EPS),
-                         skip_out))
+                         skip_out, li))
                 continue;
         }
 #endif
@@ -181,7 +185,7 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
 #if !defined(RT_NO_REFLECTION)
     if (m->reflect > 0) {
         rt_ray rr;
-        rt_ray_set(&rr, p_out, reflect_dir(r->d, n), tr->feat);
+        rt_ray_set(&rr, p_out, reflect_dir(r->d, n));
         RT_COUNT(tr, reflection);
         rgb_madd(&c, rt_trace(tr, &rr, depth + 1, skip_out), m->reflect);
     }
@@ -194,7 +198,7 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
         fx_t k = fx_sub(FX_ONE, fx_mul(fx_mul(eta, eta), sin2));
         rt_ray tr2;
         if (k < 0) { /* total internal reflection */
-            rt_ray_set(&tr2, p_out, reflect_dir(r->d, n), tr->feat);
+            rt_ray_set(&tr2, p_out, reflect_dir(r->d, n));
             RT_COUNT(tr, reflection);
             rgb_madd(&c, rt_trace(tr, &tr2, depth + 1, skip_out),
                      m->transparency);
@@ -205,7 +209,7 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
             unsigned skip_in =
                 (o->convex && (!outside || o->kind == RT_QUAD)) ? oi
                                                                  : NO_SKIP;
-            rt_ray_set(&tr2, fx_v3_madd(p, ng, -RT_EPS), td, tr->feat);
+            rt_ray_set(&tr2, fx_v3_madd(p, ng, -RT_EPS), td);
             RT_COUNT(tr, refraction);
             rgb_madd(&c, rt_trace(tr, &tr2, depth + 1, skip_in),
                      m->transparency);

@@ -9,6 +9,7 @@ typedef struct {
     unsigned max_depth; /* <= RT_MAX_DEPTH */
     uint32_t feat;      /* RT_FEAT_* of the scene */
     rt_stats *stats;    /* may be NULL */
+    uint16_t *blocker;  /* per light: the object that last blocked it */
 } rt_tracer;
 
 #if RT_STATS
@@ -21,8 +22,8 @@ typedef struct {
 #define RT_COUNT(tr, field) ((void)0)
 #endif
 
-/* Sets a ray's origin and unit direction, and what its tests need. */
-void rt_ray_set(rt_ray *r, fx_vec3 o, fx_vec3 d, uint32_t feat);
+/* Sets a ray's origin and unit direction. */
+void rt_ray_set(rt_ray *r, fx_vec3 o, fx_vec3 d);
 
 /* Colour seen along r (unclamped). depth counts bounces so far; skip is an
  * object index the ray must ignore (0xFFFF for none). Recursion depth is at

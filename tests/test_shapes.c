@@ -34,7 +34,6 @@ static rt_ray ray(double ox, double oy, double oz, double dx, double dy,
     double l = sqrt(dx * dx + dy * dy + dz * dz);
     r.o = fx_v3(D2F(ox), D2F(oy), D2F(oz));
     r.d = fx_v3(D2F(dx / l), D2F(dy / l), D2F(dz / l));
-    r.inv = fx_v3(fx_recip(r.d.x), fx_recip(r.d.y), fx_recip(r.d.z));
     return r;
 }
 
