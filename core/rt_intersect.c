@@ -24,23 +24,55 @@
  * (Q16.16, may exceed the fx_t range), *disc = r^2 - |h|^2 (Q32.32, the
  * squared half chord) and h = c - (o + tca d). Cheap rejections come first:
  * most tests end at the first comparison. */
+/* |v| < 2^29 (8192 units) per component: differences of two such points
+ * and their dot products with unit vectors fit 32-bit operands. */
+static int small3(fx_vec3 v)
+{
+    const uint32_t lim = (uint32_t)1 << 30;
+    return (uint32_t)v.x + (lim >> 1) < lim &&
+           (uint32_t)v.y + (lim >> 1) < lim && (uint32_t)v.z + (lim >> 1) < lim;
+}
+
 static int bsphere(fx_vec3 c, fx_t r, const rt_ray *ray, fx_t tmin,
                    fx_t tmax, int64_t *tca, uint64_t *disc, int64_t h[3])
 {
-    int64_t ox = (int64_t)c.x - ray->o.x;
-    int64_t oy = (int64_t)c.y - ray->o.y;
-    int64_t oz = (int64_t)c.z - ray->o.z;
-    /* |oc| < 2^33 and |d| <= 2^16, so each product stays below 2^49. */
-    int64_t q = ox * ray->d.x + oy * ray->d.y + oz * ray->d.z;
-    int64_t t = (q + 0x8000) >> 16;
-    if (t + r <= tmin || t - r >= tmax)
-        return 0; /* wholly behind the origin or beyond tmax */
-    h[0] = ox - ((t * ray->d.x + 0x8000) >> 16);
-    h[1] = oy - ((t * ray->d.y + 0x8000) >> 16);
-    h[2] = oz - ((t * ray->d.z + 0x8000) >> 16);
-    if (h[0] > r || h[0] < -r || h[1] > r || h[1] < -r || h[2] > r ||
-        h[2] < -r)
-        return 0;
+    int64_t t;
+    if (r < ((fx_t)1 << 29) && small3(c) && small3(ray->o)) {
+        /* The common case, in 32-bit operands (smull/smlal on a Cortex-M3):
+         * the same values as the general path below. */
+        int32_t ox = c.x - ray->o.x, oy = c.y - ray->o.y, oz = c.z - ray->o.z;
+        int64_t q = (int64_t)ox * ray->d.x + (int64_t)oy * ray->d.y +
+                    (int64_t)oz * ray->d.z;
+        /* |t| <= |oc| < sqrt(3) 2^30, so t fits; t +- r may not. */
+        int32_t t32 = (int32_t)((q + 0x8000) >> 16);
+        if ((int64_t)t32 + r <= tmin || (int64_t)t32 - r >= tmax)
+            return 0;
+        /* Each h component is bounded by |oc| (h is a projection). */
+        int32_t hx = ox - (int32_t)(((int64_t)t32 * ray->d.x + 0x8000) >> 16);
+        int32_t hy = oy - (int32_t)(((int64_t)t32 * ray->d.y + 0x8000) >> 16);
+        int32_t hz = oz - (int32_t)(((int64_t)t32 * ray->d.z + 0x8000) >> 16);
+        if (hx > r || hx < -r || hy > r || hy < -r || hz > r || hz < -r)
+            return 0;
+        h[0] = hx;
+        h[1] = hy;
+        h[2] = hz;
+        t = t32;
+    } else {
+        int64_t ox = (int64_t)c.x - ray->o.x;
+        int64_t oy = (int64_t)c.y - ray->o.y;
+        int64_t oz = (int64_t)c.z - ray->o.z;
+        /* |oc| < 2^33 and |d| <= 2^16: each product stays below 2^49. */
+        int64_t q = ox * ray->d.x + oy * ray->d.y + oz * ray->d.z;
+        t = (q + 0x8000) >> 16;
+        if (t + r <= tmin || t - r >= tmax)
+            return 0; /* wholly behind the origin or beyond tmax */
+        h[0] = ox - ((t * ray->d.x + 0x8000) >> 16);
+        h[1] = oy - ((t * ray->d.y + 0x8000) >> 16);
+        h[2] = oz - ((t * ray->d.z + 0x8000) >> 16);
+        if (h[0] > r || h[0] < -r || h[1] > r || h[1] < -r || h[2] > r ||
+            h[2] < -r)
+            return 0;
+    }
     uint64_t h2 = (uint64_t)(h[0] * h[0]) + (uint64_t)(h[1] * h[1]) +
                   (uint64_t)(h[2] * h[2]);
     uint64_t r2 = (uint64_t)((int64_t)r * r);

@@ -309,6 +309,45 @@ static rt_status render_plain(const rt_tracer *tr, const cam_frame *cf,
                               const rt_options *o, int y0, int y1,
                               uint8_t *row_buf, rt_row_fn fn, void *ctx);
 
+static int in01(fx_t v)
+{
+    return v >= 0 && v <= FX_ONE;
+}
+
+static int rgb_in(rt_rgb c, fx_t hi)
+{
+    return c.r >= 0 && c.r <= hi && c.g >= 0 && c.g <= hi && c.b >= 0 &&
+           c.b <= hi;
+}
+
+/* The ranges the parser enforces, checked again for scenes built in C:
+ * the tracer's colour arithmetic relies on them (rt_trace.c). */
+static int scene_in_range(const rt_scene *s)
+{
+    if (s->n_materials > RT_MAX_MATERIALS || s->n_lights > RT_MAX_LIGHTS ||
+        s->n_objects > RT_MAX_OBJECTS || !rgb_in(s->background, FX_ONE) ||
+        !rgb_in(s->ambient, FX_INT(16)))
+        return 0;
+    for (unsigned i = 0; i < s->n_lights; i++)
+        if (!rgb_in(s->light[i].color, FX_INT(16)))
+            return 0;
+    for (unsigned i = 0; i < s->n_materials; i++) {
+        const rt_material *m = &s->mat[i];
+        if (!rgb_in(m->color, FX_ONE) || !rgb_in(m->color2, FX_ONE) ||
+            !in01(m->ambient) || !in01(m->diffuse) || !in01(m->specular) ||
+            !in01(m->reflect) || !in01(m->transparency) ||
+            m->reflect + m->transparency > FX_ONE || m->shininess < 1 ||
+            m->shininess > 1024 || m->texture > RT_TEX_CHECKER3D ||
+            m->axis > 2)
+            return 0;
+    }
+    for (unsigned i = 0; i < s->n_objects; i++)
+        if (s->obj[i].material >= s->n_materials ||
+            s->obj[i].kind >= RT_KIND_COUNT)
+            return 0;
+    return 1;
+}
+
 rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
                          int y1, uint8_t *row_buf, rt_row_fn fn, void *ctx,
                          rt_stats *stats)
@@ -320,7 +359,7 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
         o->width > RT_MAX_WIDTH || o->height < 1 ||
         o->height > RT_MAX_HEIGHT || o->depth > RT_MAX_DEPTH ||
         o->format > RT_RGB565_BE || y0 < 0 || y1 > (int)o->height ||
-        y0 > y1)
+        y0 > y1 || !scene_in_range(s))
         return RT_ERR_ARG;
 
     rt_tracer tr;

@@ -56,7 +56,10 @@ size_t rt_buffer_bytes(const rt_options *o);
 
 /* Renders rows y0 <= y < y1 (top row is 0) into row_buf (rt_buffer_bytes()
  * bytes), calling fn after each. Rows are independent: any split into bands gives the same bytes.
- * stats may be NULL. Returns RT_OK, RT_ERR_ARG for bad options or rows,
+ * stats may be NULL. Returns RT_OK, RT_ERR_ARG for bad options or rows, or
+ * for a scene outside the parser's ranges (colours in [0, 1], light and
+ * ambient colours in [0, 16], coefficients in [0, 1], reflect +
+ * transparency <= 1, shininess 1..1024, valid indices),
  * RT_ERR_UNSUPPORTED when the scene needs an effect this build removed, or
  * RT_ERR_ABORTED when fn returned non-zero. */
 rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,

@@ -17,18 +17,32 @@ static rt_rgb rgb(fx_t r, fx_t g, fx_t b)
     return c;
 }
 
-/* c += w * a (per channel), saturating. */
+/* Colour arithmetic needs no saturation: rt_render_rows accepts only
+ * scenes whose colours and coefficients lie in the parser's ranges (lights
+ * and ambient <= 16, the rest <= 1, kr + kt <= 1), so a channel stays below
+ * RT_COLOUR_BOUND through every bounce. Rounding is fx_mul's. */
+#define RT_COLOUR_BOUND ((16 + 32 * RT_MAX_LIGHTS) * (RT_MAX_DEPTH + 1))
+#if RT_COLOUR_BOUND * 16 >= 32768
+#error "RT_MAX_LIGHTS and RT_MAX_DEPTH allow colours beyond Q16.16"
+#endif
+
+static fx_t cmul(fx_t a, fx_t b)
+{
+    return (fx_t)(((int64_t)a * b + 0x8000) >> 16);
+}
+
+/* c += w * a (per channel). */
 static void rgb_madd(rt_rgb *c, rt_rgb a, fx_t w)
 {
-    c->r = fx_add(c->r, fx_mul(a.r, w));
-    c->g = fx_add(c->g, fx_mul(a.g, w));
-    c->b = fx_add(c->b, fx_mul(a.b, w));
+    c->r += cmul(a.r, w);
+    c->g += cmul(a.g, w);
+    c->b += cmul(a.b, w);
 }
 
 /* a (*) b, per channel. */
 static rt_rgb rgb_mul(rt_rgb a, rt_rgb b)
 {
-    return rgb(fx_mul(a.r, b.r), fx_mul(a.g, b.g), fx_mul(a.b, b.b));
+    return rgb(cmul(a.r, b.r), cmul(a.g, b.g), cmul(a.b, b.b));
 }
 
 void rt_ray_set(rt_ray *r, fx_vec3 o, fx_vec3 d)
