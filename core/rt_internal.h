@@ -15,9 +15,17 @@
 #define RT_PAR_Q32 ((int64_t)1 << 16)
 
 typedef struct {
-    fx_vec3 o; /* origin */
-    fx_vec3 d; /* unit direction */
+    fx_vec3 o;     /* origin */
+    fx_vec3 d;     /* unit direction */
+    uint8_t small; /* rt_small3(o): the 32-bit intersection paths apply */
 } rt_ray;
+
+/* 1 if every component of v is below 2^29 (8192 units) in magnitude:
+ * differences of two such points fit 32 bits. */
+int rt_small3(fx_vec3 v);
+
+/* floor(n / d) for d > 0 and n < d * 2^32 (the quotient fits 32 bits). */
+uint32_t rt_udiv64_32(uint64_t n, uint32_t d);
 
 /* Ray-object intersection: the nearest t with tmin < t < tmax. Returns 1
  * and sets *t and *part (which face, cap or side) on a hit, else 0. */

@@ -24,20 +24,21 @@
  * (Q16.16, may exceed the fx_t range), *disc = r^2 - |h|^2 (Q32.32, the
  * squared half chord) and h = c - (o + tca d). Cheap rejections come first:
  * most tests end at the first comparison. */
-/* |v| < 2^29 (8192 units) per component: differences of two such points
- * and their dot products with unit vectors fit 32-bit operands. */
-static int small3(fx_vec3 v)
+int rt_small3(fx_vec3 v)
 {
     const uint32_t lim = (uint32_t)1 << 30;
     return (uint32_t)v.x + (lim >> 1) < lim &&
            (uint32_t)v.y + (lim >> 1) < lim && (uint32_t)v.z + (lim >> 1) < lim;
 }
 
-static int bsphere(fx_vec3 c, fx_t r, const rt_ray *ray, fx_t tmin,
-                   fx_t tmax, int64_t *tca, uint64_t *disc, int64_t h[3])
+/* small: the object's centre and radius are rt_small3 (rt_object.small). */
+static int bsphere(const fx_vec3 *cp, fx_t r, int small, const rt_ray *ray,
+                   fx_t tmin, fx_t tmax, int64_t *tca, uint64_t *disc,
+                   int64_t h[3])
 {
+    const fx_vec3 c = *cp;
     int64_t t;
-    if (r < ((fx_t)1 << 29) && small3(c) && small3(ray->o)) {
+    if (small && ray->small) {
         /* The common case, in 32-bit operands (smull/smlal on a Cortex-M3):
          * the same values as the general path below. */
         int32_t ox = c.x - ray->o.x, oy = c.y - ray->o.y, oz = c.z - ray->o.z;
@@ -83,6 +84,37 @@ static int bsphere(fx_vec3 c, fx_t r, const rt_ray *ray, fx_t tmin,
     return 1;
 }
 
+uint32_t rt_udiv64_32(uint64_t n, uint32_t d)
+{
+    /* Long division in base 2^16 after normalising d (Knuth's algorithm D
+     * as in Hacker's Delight, divlu): two 32-bit hardware divides on a
+     * Cortex-M3 instead of a 64-bit library divide. Unsigned wrap-around
+     * in the intermediate products is part of the method. */
+    const uint32_t b = 65536;
+    uint32_t u1 = (uint32_t)(n >> 32), u0 = (uint32_t)n;
+    int s = fx_clz32(d);
+    uint32_t v = d << s, vn1 = v >> 16, vn0 = v & 0xFFFF;
+    uint32_t un32 = s ? (u1 << s) | (u0 >> (32 - s)) : u1;
+    uint32_t un10 = u0 << s, un1 = un10 >> 16, un0 = un10 & 0xFFFF;
+    uint32_t q1 = un32 / vn1, rhat = un32 - q1 * vn1;
+    while (q1 >= b || q1 * vn0 > b * rhat + un1) {
+        q1--;
+        rhat += vn1;
+        if (rhat >= b)
+            break;
+    }
+    uint32_t un21 = un32 * b + un1 - q1 * v;
+    uint32_t q0 = un21 / vn1;
+    rhat = un21 - q0 * vn1;
+    while (q0 >= b || q0 * vn0 > b * rhat + un0) {
+        q0--;
+        rhat += vn1;
+        if (rhat >= b)
+            break;
+    }
+    return q1 * b + q0;
+}
+
 /* Accepts t if tmin < t < tmax and nearer than the best so far. */
 static int take(int64_t t, fx_t tmin, fx_t *best)
 {
@@ -102,7 +134,7 @@ static int hit_sphere(const rt_object *o, const rt_ray *r, fx_t tmin,
     int64_t tca, h[3];
     uint64_t disc;
     fx_t best = tmax;
-    if (!bsphere(o->a, o->r, r, tmin, tmax, &tca, &disc, h))
+    if (!bsphere(&o->a, o->r, o->small, r, tmin, tmax, &tca, &disc, h))
         return 0;
     int64_t thc = fx_sqrt_q32(disc);
     if (!take(tca - thc, tmin, &best) && !take(tca + thc, tmin, &best))
@@ -129,8 +161,14 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
     int64_t den24 = den >> 8;
     if (den24 == 0)
         return 0;
-    /* |num| < 2^49 (|dist|, |o.n| < 2^31 * 2^16): the shift stays < 2^57. */
-    int64_t tt = (num * 256) / den24;
+    /* t = num * 256 / den24, both of one sign. |num| < 2^49, so the
+     * dividend stays below 2^57; a quotient of 2^32 or more is beyond any
+     * tmax, so a 64/32 division with a 32-bit quotient suffices. */
+    uint64_t un = (uint64_t)(num < 0 ? -num : num) << 8;
+    uint32_t ud = (uint32_t)(den24 < 0 ? -den24 : den24);
+    if ((un >> 32) >= ud)
+        return 0;
+    int64_t tt = rt_udiv64_32(un, ud);
     if (tt <= tmin || tt >= tmax)
         return 0;
     int64_t qx = (int64_t)r->o.x + ((tt * r->d.x + 0x8000) >> 16) - o->a.x;
@@ -237,7 +275,7 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
     uint64_t disc;
     fx_t best = tmax, root[2];
     int k = o->ushift, found = 0, cone = o->kind == RT_CONE;
-    if (!bsphere(o->bc, o->br, r, tmin, tmax, &tca, &disc, h))
+    if (!bsphere(&o->bc, o->br, o->small, r, tmin, tmax, &tca, &disc, h))
         return 0;
     /* Closest point on the ray, relative to the centre, in the frame. */
     fx_t px = to_frame(-h[0], k), py = to_frame(-h[1], k);
@@ -306,7 +344,7 @@ int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
     case RT_BOX: {
         int64_t tca, h[3];
         uint64_t disc;
-        if (!bsphere(o->bc, o->br, r, tmin, tmax, &tca, &disc, h))
+        if (!bsphere(&o->bc, o->br, o->small, r, tmin, tmax, &tca, &disc, h))
             return 0;
 #if !defined(RT_NO_QUAD)
         if (o->kind == RT_QUAD)

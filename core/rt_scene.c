@@ -76,7 +76,16 @@ static rt_status upright_bounds(rt_object *o)
     return RT_OK;
 }
 
+static rt_status prepare_shape(rt_object *o);
+
 rt_status rt_object_prepare(rt_object *o)
+{
+    rt_status st = prepare_shape(o);
+    o->small = st == RT_OK && o->br < ((fx_t)1 << 29) && rt_small3(o->bc);
+    return st;
+}
+
+static rt_status prepare_shape(rt_object *o)
 {
     switch (o->kind) {
     case RT_SPHERE:

@@ -75,6 +75,8 @@ typedef struct {
     uint8_t material; /* index into rt_scene.mat */
     uint8_t caps;     /* RT_CAP_* */
     uint8_t convex;   /* derived: a ray leaving the surface cannot re-hit it */
+    uint8_t small;    /* derived: bounding sphere within 8192 units (the
+                         32-bit intersection path applies) */
     fx_vec3 a;        /* sphere: centre; quad: corner; box: min;
                          cylinder, cone: base centre */
     fx_vec3 b;        /* quad: edge1; box: max */

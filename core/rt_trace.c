@@ -49,6 +49,7 @@ void rt_ray_set(rt_ray *r, fx_vec3 o, fx_vec3 d)
 {
     r->o = o;
     r->d = d;
+    r->small = (uint8_t)rt_small3(o);
 }
 
 /* Nearest hit among all objects but `skip`. */

@@ -34,6 +34,7 @@ static rt_ray ray(double ox, double oy, double oz, double dx, double dy,
     double l = sqrt(dx * dx + dy * dy + dz * dz);
     r.o = fx_v3(D2F(ox), D2F(oy), D2F(oz));
     r.d = fx_v3(D2F(dx / l), D2F(dy / l), D2F(dz / l));
+    r.small = (uint8_t)rt_small3(r.o);
     return r;
 }
 
@@ -214,8 +215,34 @@ static void random_spheres(void)
            "off the surface beyond the bound: %d\n", n, bad_hit, bad_t);
 }
 
+/* rt_udiv64_32 against the compiler's 64-bit division. */
+static void division(void)
+{
+    uint64_t x = 88172645463325252ull;
+    long bad = 0, n = 0;
+    for (int i = 0; i < 1000000; i++) {
+        x ^= x << 13; x ^= x >> 7; x ^= x << 17;
+        uint32_t d = (uint32_t)(x >> (x & 31));
+        if (d == 0)
+            d = 1;
+        x ^= x << 13; x ^= x >> 7; x ^= x << 17;
+        uint64_t num = x % ((uint64_t)d << 32); /* quotient < 2^32 */
+        if (i % 7 == 0)
+            num = ((uint64_t)d << 32) - 1 - (x & 0xFF);
+        n++;
+        bad += rt_udiv64_32(num, d) != (uint32_t)(num / d);
+    }
+    CHECK_EQ(bad, 0);
+    CHECK_EQ(rt_udiv64_32(0, 1), 0);
+    CHECK_EQ(rt_udiv64_32(((uint64_t)0xFFFFFFFFu << 32) - 1, 0xFFFFFFFFu),
+             0xFFFFFFFFu); /* the largest dividend allowed */
+    CHECK_EQ(rt_udiv64_32(((uint64_t)1 << 32) - 1, 1), 0xFFFFFFFFu);
+    printf("rt_udiv64_32: %ld random divisions, %ld wrong\n", n, bad);
+}
+
 int main(void)
 {
+    division();
     sphere_cases();
     quad_cases();
     box_cases();
