@@ -211,7 +211,8 @@ static void pixel(const rt_tracer *tr, const cam_frame *cf,
 {
     const unsigned n = cf->n, spp = n * n;
     const int32_t wn = (int32_t)(o->width * n), hn = (int32_t)(o->height * n);
-    int64_t sum[3] = { 0, 0, 0 };
+    /* At most 16 samples of at most 2^16 each: 32 bits hold the sum. */
+    uint32_t sum[3] = { 0, 0, 0 };
     for (unsigned j = 0; j < n; j++) {
         fx_t sy = cam_offset(cf, hn - (int32_t)(2 * y * n + 2 * j + 1));
         fx_vec3 base = fx_v3_madd(cf->w, cf->up, sy);
@@ -222,13 +223,13 @@ static void pixel(const rt_tracer *tr, const cam_frame *cf,
                        fx_v3_normalize(fx_v3_madd(base, cf->right, sx)));
             RT_COUNT(tr, primary);
             rt_rgb c = rt_trace_camera(tr, &r, rs->span, rs->count, x);
-            sum[0] += clamp01(c.r);
-            sum[1] += clamp01(c.g);
-            sum[2] += clamp01(c.b);
+            sum[0] += (uint32_t)clamp01(c.r);
+            sum[1] += (uint32_t)clamp01(c.g);
+            sum[2] += (uint32_t)clamp01(c.b);
         }
     }
     for (int k = 0; k < 3; k++)
-        rgb8[k] = fx_to_u8((fx_t)((sum[k] + spp / 2) / spp));
+        rgb8[k] = fx_to_u8((fx_t)(spp == 1 ? sum[k] : (sum[k] + spp / 2) / spp));
 }
 
 size_t rt_buffer_bytes(const rt_options *o)
