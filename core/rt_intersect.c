@@ -339,22 +339,19 @@ int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
     case RT_SPHERE:
         return hit_sphere(o, r, tmin, tmax, t, part);
 #endif
-#if !defined(RT_NO_QUAD) || !defined(RT_NO_BOX)
+#if !defined(RT_NO_QUAD)
     case RT_QUAD:
+        /* The plane test itself is as cheap as a bounding sphere and
+         * rejects rays leaving the plane's side at once. */
+        return hit_quad(o, r, tmin, tmax, t, part);
+#endif
+#if !defined(RT_NO_BOX)
     case RT_BOX: {
         int64_t tca, h[3];
         uint64_t disc;
         if (!bsphere(&o->bc, o->br, o->small, r, tmin, tmax, &tca, &disc, h))
             return 0;
-#if !defined(RT_NO_QUAD)
-        if (o->kind == RT_QUAD)
-            return hit_quad(o, r, tmin, tmax, t, part);
-#endif
-#if !defined(RT_NO_BOX)
-        if (o->kind == RT_BOX)
-            return hit_box(o, r, tmin, tmax, t, part);
-#endif
-        return 0;
+        return hit_box(o, r, tmin, tmax, t, part);
     }
 #endif
 #if !defined(RT_NO_CYLINDER) || !defined(RT_NO_CONE)
