@@ -12,10 +12,12 @@
  *   stack_reserved N stack size reserved by the linker script
  *
  * Errors print "fixtrace: ..." on the text channel and exit with a code
- * from port.h (2 parse, 3 options, 4 render, 5 stack).
+ * from port.h (2 parse, 3 options, 4 render, including a scene that needs
+ * an effect this build removed (docs/effects.md), 5 stack).
  *
  * The build (mk/firmware.mk) generates fw_config.h with FW_WIDTH,
- * FW_HEIGHT and FW_SPP; 0 means "the scene's default".
+ * FW_HEIGHT and FW_SPP (0 means "the scene's default") and FW_ADAPTIVE
+ * (0, or the adaptive anti-aliasing threshold of rt_options).
  */
 #include "port.h"
 #include "fw_config.h"
@@ -36,9 +38,17 @@ extern const uint32_t fw_scene_len;
 #define FW_ROW_PIXELS RT_MAX_WIDTH
 #endif
 
+/* Bytes per pixel of the row buffer: the RGB888 row, plus three rows of
+ * centre samples for adaptive anti-aliasing (rt_buffer_bytes()). */
+#if FW_ADAPTIVE > 0
+#define FW_BUF_PIXEL_BYTES 12
+#else
+#define FW_BUF_PIXEL_BYTES 3
+#endif
+
 /* Both live in .bss, so `make size` accounts for them. */
 static rt_scene scene;
-static uint8_t row_buf[FW_ROW_PIXELS * 3];
+static uint8_t row_buf[FW_ROW_PIXELS * FW_BUF_PIXEL_BYTES];
 
 static void log_status(const char *what, rt_status st)
 {
@@ -57,6 +67,24 @@ static int send_row(void *ctx, int y, const uint8_t *row, size_t nbytes)
     (void)y;
     port_write(row, nbytes);
     return 0;
+}
+
+/* Names the effects in `missing` (RT_FEAT_* bits) that the scene needs and
+ * this build removed, as the host does. */
+static void log_missing(uint32_t missing)
+{
+    const char *sep = "";
+    port_log("fixtrace: the scene needs ");
+    for (uint32_t bit = 1; bit != 0; bit <<= 1) {
+        if (missing & bit) {
+            port_log(sep);
+            port_log(rt_feature_name(bit));
+            sep = ", ";
+        }
+    }
+    port_log((missing & (missing - 1)) ? ", but this firmware was built "
+             "without them" : ", but this firmware was built without it");
+    port_log(" (build it for this scene, or with PRUNE=0)\n");
 }
 
 /* "P6\n<w> <h>\n255\n", as the host writes it. */
@@ -110,19 +138,27 @@ int main(void)
         opt.height = FW_HEIGHT;
     if (FW_SPP > 0)
         opt.spp = FW_SPP;
+    opt.adaptive = FW_ADAPTIVE;
     if (opt.width > RT_MAX_WIDTH || opt.height > RT_MAX_HEIGHT ||
-        rt_row_bytes(&opt) > sizeof row_buf) {
+        rt_buffer_bytes(&opt) > sizeof row_buf) {
         port_log("fixtrace: image ");
         port_log_u64(opt.width);
         port_log("x");
         port_log_u64(opt.height);
         port_log(" is larger than this build allows: ");
-        port_log_u64(sizeof row_buf / 3 < RT_MAX_WIDTH ? sizeof row_buf / 3
-                                                       : RT_MAX_WIDTH);
+        port_log_u64(FW_ROW_PIXELS < RT_MAX_WIDTH ? FW_ROW_PIXELS
+                                                  : RT_MAX_WIDTH);
         port_log("x");
         port_log_u64(RT_MAX_HEIGHT);
         port_log(" (set WIDTH and HEIGHT)\n");
         return PORT_EXIT_OPTIONS;
+    }
+
+    uint32_t missing = rt_scene_features(&scene, opt.spp) &
+                       ~rt_build_features();
+    if (missing) {
+        log_missing(missing);
+        return PORT_EXIT_RENDER;
     }
 
     send_header(opt.width, opt.height);

@@ -1,0 +1,141 @@
+#!/usr/bin/env bash
+# Firmware built for what the scene needs (docs/effects.md), on the M3
+# (an385) at 48x36:
+# - `make firmware` derives the RT_NO_* flags from the scene itself: the
+#   generated build/.../fw_effects.h holds exactly `fixtrace --build-flags`;
+# - the pruned (PRUNE=1) and the full (PRUNE=0) firmware for the diffuse
+#   scene both render the host's bytes, and the pruned one is smaller;
+# - switching the same build to the seed scene re-derives the flags and
+#   rebuilds what they affect (it renders the host's bytes too);
+# - a firmware with an effect removed by hand refuses the seed scene with
+#   a message naming the effect and exit status 4, and sends no image;
+# - the minimal renderer (bench/minimal) still renders the host's bytes.
+set -u
+cd "$(dirname "$0")/.."
+FT=${FIXTRACE:-build/posix/fixtrace}
+MK=${MAKE:-make}
+W=48 H=36
+DIFFUSE=scenes/diffuse.scene SEED=scenes/seed.scene
+B=build/pruning
+pass=0 fail=0
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAILED: $*"; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+missing=""
+for t in arm-none-eabi-gcc qemu-system-arm; do
+    command -v "$t" >/dev/null || missing="${missing:+$missing }$t"
+done
+if [ -n "$missing" ]; then
+    echo "SKIPPED: firmware pruning ($missing missing; install" \
+        "gcc-arm-none-eabi qemu-system-arm)"
+    echo "0 passed, 0 failed, 1 skipped"
+    exit 0
+fi
+if [ ! -x "$FT" ]; then
+    echo "FAILED: $FT not built (run make first)"
+    echo "0 passed, 1 failed"
+    exit 1
+fi
+
+# Two runs of this suite in one tree would share build/pruning: take turns.
+mkdir -p "$B"
+if command -v flock >/dev/null; then
+    exec 9>"$B/.suite.lock"
+    flock 9
+fi
+
+# fw NAME TARGET ARGS...: make for the an385 in $B/NAME, log in $tmp/NAME.log.
+fw() {
+    local name=$1 target=$2
+    shift 2
+    "$MK" -s "$target" BOARD=an385 FW_BUILD="$B/$name" WIDTH=$W HEIGHT=$H \
+        QEMU_TIMEOUT=60 "$@" >>"$tmp/$name.log" 2>&1
+}
+
+# flash NAME: text + rodata of the firmware in $B/NAME.
+flash() {
+    arm-none-eabi-size -A "$B/$1/fixtrace.elf" |
+        awk '$1 == ".text" { t = $2 } $1 == ".rodata" { r = $2 }
+             END { print t + r }'
+}
+
+for s in diffuse seed; do
+    "$FT" -q -W $W -H $H -o "$tmp/$s.ppm" "scenes/$s.scene" ||
+        { bad "host render of $s failed"; }
+done
+
+# The three firmware variants build and run side by side.
+( fw pruned qemu SCENE=$DIFFUSE PRUNE=1; echo $? >"$tmp/pruned.rc" ) &
+( fw full qemu SCENE=$DIFFUSE PRUNE=0; echo $? >"$tmp/full.rc" ) &
+( fw refuse qemu SCENE=$SEED PRUNE=1 FW_DEFS=-DRT_NO_REFLECTION
+  echo $? >"$tmp/refuse.rc" ) &
+( "$MK" -s minimal BOARD=an385 WIDTH=$W HEIGHT=$H >"$tmp/minimal.log" 2>&1
+  echo $? >"$tmp/minimal.rc" ) &
+wait
+
+for v in pruned full; do
+    if [ "$(cat "$tmp/$v.rc")" = 0 ] && cmp -s "$B/$v/out.ppm" "$tmp/diffuse.ppm"
+    then
+        ok
+    else
+        bad "$v firmware for diffuse: status $(cat "$tmp/$v.rc"), image" \
+            "$(cmp "$B/$v/out.ppm" "$tmp/diffuse.ppm" 2>&1 | head -n 1)" \
+            "$(tail -n 5 "$tmp/$v.log")"
+    fi
+done
+
+# The flags come from the scene, not from the user.
+want=$("$FT" --build-flags -s 1 "$DIFFUSE" | tr ' ' '\n' | sed 's/^-D//' |
+    sort | tr '\n' ' ')
+got=$(sed -nE 's/^#define (RT_NO_[A-Z]+) 1$/\1/p' "$B/pruned/fw_effects.h" |
+    sort | tr '\n' ' ')
+[ -n "$want" ] && [ "$got" = "$want" ] && ok ||
+    bad "fw_effects.h removes '$got', fixtrace --build-flags says '$want'"
+[ -f "$B/full/fw_effects.h" ] && ! grep -q '^#define' "$B/full/fw_effects.h" &&
+    ok ||
+    bad "PRUNE=0 removed effects: $(cat "$B/full/fw_effects.h")"
+
+# Smaller: report the ratio; it must at least shrink.
+fp=$(flash pruned) ff=$(flash full)
+echo "flash (text+rodata) at ${W}x$H: pruned $fp, full $ff" \
+    "($(awk -v a="$fp" -v b="$ff" 'BEGIN { printf "%.1f", 100 * a / b }')%)"
+[ -n "$fp" ] && [ -n "$ff" ] && [ "$fp" -lt "$ff" ] && ok ||
+    bad "pruned flash '$fp' is not below full flash '$ff'"
+
+# The same build directory, switched to the seed scene: the flags are
+# derived again and the core rebuilt with them.
+if fw pruned qemu SCENE=$SEED PRUNE=1 &&
+    cmp -s "$B/pruned/out.ppm" "$tmp/seed.ppm"; then
+    ok
+else
+    bad "the pruned build switched to seed renders wrong bytes:" \
+        "$(tail -n 5 "$tmp/pruned.log")"
+fi
+grep -q RT_NO_REFLECTION "$B/pruned/fw_effects.h" &&
+    bad "switching to seed kept RT_NO_REFLECTION" || ok
+
+# Refusal: exit 4, the effect named on stderr, no image bytes.
+rc=$(sed -nE 's/^qemu: firmware exit status ([0-9]+).*/\1/p' \
+    "$tmp/refuse.log" | tail -n 1)
+if [ "$rc" = 4 ] && grep -q 'needs reflection.*built without it' \
+    "$tmp/refuse.log" && [ ! -s "$B/refuse/out.ppm" ]; then
+    ok
+else
+    bad "seed on a firmware without reflection: exit '$rc'," \
+        "$(grep -v '^qemu:' "$tmp/refuse.log" | head -c 300)"
+fi
+
+# The minimal renderer's yardstick still holds.
+if [ "$(cat "$tmp/minimal.rc")" = 0 ] &&
+    grep -q '^image identical' "$tmp/minimal.log"; then
+    ok
+    grep -E '^(instructions_per_pixel|flash) ' "$tmp/minimal.log" |
+        sed 's/^/minimal: /'
+else
+    bad "make minimal: $(tail -n 8 "$tmp/minimal.log")"
+fi
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
