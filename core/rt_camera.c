@@ -42,6 +42,6 @@ fx_t rt_tan_half_deg(fx_t deg)
     }
     if (c <= 0)
         return FX_MAX;
-    int64_t q = ((s << 16) + c / 2) / c;
+    int64_t q = (s * 65536 + c / 2) / c;
     return fx_sat64(q);
 }

@@ -155,7 +155,7 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
         return 0;
     /* num = (dist - o.n) in Q32.32; t = num / den, with den kept to 24
      * fractional bits so grazing rays keep their precision. */
-    int64_t num = ((int64_t)o->dist << 16) - fx_v3_dot_q32(r->o, o->n);
+    int64_t num = (int64_t)o->dist * 65536 - fx_v3_dot_q32(r->o, o->n);
     if ((num < 0) != (den < 0))
         return 0;
     int64_t den24 = den >> 8;

@@ -185,12 +185,19 @@ static fx_t clamp01(fx_t v)
 typedef struct {
     rt_span span[RT_MAX_OBJECTS];
     unsigned count;
+    fx_vec3 base[RT_MAX_SPP_SIDE]; /* w + sy up for each sample row */
 } row_spans;
 
 static void row_setup(row_spans *rs, const rt_tracer *tr, const cam_frame *cf,
                       const rt_options *o, unsigned y)
 {
     const rt_scene *s = tr->scene;
+    const unsigned n = cf->n;
+    for (unsigned j = 0; j < n; j++) {
+        fx_t sy = cam_offset(cf, (int32_t)(o->height * n) -
+                                     (int32_t)(2 * y * n + 2 * j + 1));
+        rs->base[j] = fx_v3_madd(cf->w, cf->up, sy);
+    }
 #if RT_CULL
     rs->count = rt_cull_row(s, cf, o->width, o->height, y, rs->span);
 #else
@@ -210,12 +217,12 @@ static void pixel(const rt_tracer *tr, const cam_frame *cf,
                   unsigned y, uint8_t rgb8[3])
 {
     const unsigned n = cf->n, spp = n * n;
-    const int32_t wn = (int32_t)(o->width * n), hn = (int32_t)(o->height * n);
+    const int32_t wn = (int32_t)(o->width * n);
+    (void)y;
     /* At most 16 samples of at most 2^16 each: 32 bits hold the sum. */
     uint32_t sum[3] = { 0, 0, 0 };
     for (unsigned j = 0; j < n; j++) {
-        fx_t sy = cam_offset(cf, hn - (int32_t)(2 * y * n + 2 * j + 1));
-        fx_vec3 base = fx_v3_madd(cf->w, cf->up, sy);
+        fx_vec3 base = rs->base[j];
         for (unsigned i = 0; i < n; i++) {
             fx_t sx = cam_offset(cf, (int32_t)(2 * x * n + 2 * i + 1) - wn);
             rt_ray r;
@@ -372,6 +379,7 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
     tr.max_depth = o->depth;
     tr.feat = rt_scene_features(s, o->spp);
     tr.stats = stats;
+    rt_tracer_prepare(&tr);
     cam_frame cf;
     cam_setup(&cf, s, o, n);
 #if !defined(RT_NO_SUPERSAMPLING)

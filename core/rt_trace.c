@@ -158,9 +158,19 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
     if (wl < 0)
         wl = 0;
 
-    rt_rgb c = rgb(0, 0, 0);
-    rgb_madd(&c, rgb_mul(base, s->ambient), fx_mul(wl, m->ambient));
-    fx_t kdl = fx_mul(wl, m->diffuse);
+    rt_rgb c;
+    fx_t kdl = tr->kdl[o->material];
+#if defined(RT_NO_TEXTURES)
+    const int plain = 1;
+#else
+    const int plain = m->texture == RT_TEX_NONE;
+#endif
+    if (plain) {
+        c = tr->amb[o->material];
+    } else {
+        c = rgb(0, 0, 0);
+        rgb_madd(&c, rgb_mul(base, s->ambient), fx_mul(wl, m->ambient));
+    }
 #if defined(RT_NO_MULTILIGHT)
     const unsigned n_lights = s->n_lights ? 1 : 0; /* checked at start */
 #else
@@ -186,7 +196,12 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
                 continue;
         }
 #endif
-        rgb_madd(&c, rgb_mul(base, l->color), fx_mul(kdl, ndl));
+        rt_rgb lc;
+        if (plain && li == 0)
+            lc = tr->lit[o->material];
+        else
+            lc = rgb_mul(base, l->color);
+        rgb_madd(&c, lc, fx_mul(kdl, ndl));
 #if !defined(RT_NO_SPECULAR)
         if (m->specular > 0) {
             /* R = 2 (n.l) n - l; rv = R.v with v = -d. */
@@ -272,4 +287,20 @@ rt_rgb rt_trace_camera(const rt_tracer *tr, const rt_ray *r,
     if (!found)
         return s->background;
     return shade(tr, r, 0, oi, part, best);
+}
+
+void rt_tracer_prepare(rt_tracer *tr)
+{
+    const rt_scene *s = tr->scene;
+    for (unsigned i = 0; i < s->n_materials; i++) {
+        const rt_material *m = &s->mat[i];
+        fx_t wl = fx_sub(fx_sub(FX_ONE, m->reflect), m->transparency);
+        if (wl < 0)
+            wl = 0;
+        rt_rgb c = rgb(0, 0, 0);
+        rgb_madd(&c, rgb_mul(m->color, s->ambient), fx_mul(wl, m->ambient));
+        tr->amb[i] = c;
+        tr->kdl[i] = fx_mul(wl, m->diffuse);
+        tr->lit[i] = s->n_lights ? rgb_mul(m->color, s->light[0].color) : c;
+    }
 }

@@ -10,7 +10,13 @@ typedef struct {
     uint32_t feat;      /* RT_FEAT_* of the scene */
     rt_stats *stats;    /* may be NULL */
     uint16_t *blocker;  /* per light: the object that last blocked it */
+    rt_rgb amb[RT_MAX_MATERIALS]; /* untextured: ambient term */
+    fx_t kdl[RT_MAX_MATERIALS];   /* wl * kd */
+    rt_rgb lit[RT_MAX_MATERIALS]; /* untextured: colour x light 0 */
 } rt_tracer;
+
+/* Fills the per-material constants of tr (after tr->scene is set). */
+void rt_tracer_prepare(rt_tracer *tr);
 
 #if RT_STATS
 #define RT_COUNT(tr, field)                                                   \
