@@ -34,6 +34,7 @@ include mk/test.mk
 -include mk/fuzz.mk
 -include mk/lint.mk
 -include mk/bench.mk
+-include mk/docs.mk
 
 .PHONY: all clean print-%
 all: $(FIXTRACE)

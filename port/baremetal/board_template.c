@@ -1,0 +1,100 @@
+/*
+ * board_template.c: the starting point for a new board (docs/porting.md).
+ *
+ * Copy it to board_<name>.c, change the "#if 0" below to "#if 1" and fill
+ * in every place marked FILL IN. With linker/template.ld copied to
+ * linker/<name>.ld and a few lines in mk/firmware.mk, that is the whole
+ * port: the startup code (startup_cortexm.c or startup_rv32.c), the output
+ * channels over semihosting (semihost.c), the stack painting (common.c)
+ * and the firmware itself (main.c) are shared by every board.
+ *
+ * A board provides three functions (port.h): port_init(), port_cycles()
+ * and port_cycles_to_insns(). The values filled in below are those of
+ * QEMU's mps2-an385 as an example; look up yours in the board's manual,
+ * or in QEMU's source for a QEMU machine (hw/arm/, hw/timer/).
+ */
+
+/* Set this to "#if 1" to enable the content. */
+#if 0
+
+/*********************
+ *      INCLUDES
+ *********************/
+#include "port.h"
+
+/*********************
+ *      DEFINES
+ *********************/
+
+/* FILL IN: a free-running up-counter that ticks at a fixed rate of the
+ * (virtual) clock from reset. QEMU's -icount mode makes virtual time
+ * advance by exactly 2^shift ns per instruction, so such a counter counts
+ * instructions. mps2-an385: the FPGAIO COUNTER, 32 bits at 25 MHz. */
+#define BOARD_FAST_COUNTER (*(volatile const uint32_t *)0x40028018u)
+
+/* FILL IN: a second, slower counter from reset that supplies the upper
+ * bits, so that port_cycles() does not wrap when the fast one does (after
+ * 2^32 ticks: 172 s of virtual time at 25 MHz). BOARD_SLOW_TICKS is how
+ * many fast ticks one slow tick lasts. mps2-an385: the FPGAIO 100 Hz
+ * counter, 25 MHz / 100 Hz = 250000. Set BOARD_SLOW_TICKS to 0 if there
+ * is none: runs longer than one wrap then report a wrong count. */
+#define BOARD_SLOW_COUNTER (*(volatile const uint32_t *)0x40028014u)
+#define BOARD_SLOW_TICKS 250000u
+
+/* FILL IN: instructions per fast tick as a fraction NUM / DEN, for the
+ * -icount shift given to the board in mk/firmware.mk (FW_ICOUNT). At
+ * shift 7 an instruction takes 128 ns; a 25 MHz counter ticks every 40 ns,
+ * so one tick is 40 / 128 = 5 / 16 instruction. With shift 0 and a
+ * counter of instructions (RISC-V minstret): 1 / 1. */
+#define BOARD_INSNS_NUM 5u
+#define BOARD_INSNS_DEN 16u
+
+/**********************
+ *   GLOBAL FUNCTIONS
+ **********************/
+
+/* Called first thing in main(), after the startup code has copied .data,
+ * zeroed .bss and painted the stack. */
+void port_init(void)
+{
+    /* The image and the figures leave through semihosting (semihost.c):
+     * this opens its two channels. */
+    port_semihost_init();
+
+    /* FILL IN: anything the board needs before the render: clocks, a
+     * watchdog to feed or disable, the counters above if they need
+     * starting (the nRF51's TIMER0 does: board_microbit.c). A Cortex-M4F
+     * or M33 built for the hard-float ABI must enable the FPU here (CPACR
+     * at 0xE000ED88, bits 20-23) before any floating-point instruction;
+     * the core itself never uses one. Optionally, protect the lowest bytes
+     * of the stack (_sstack) with the MPU or a PMP region, so an overflow
+     * faults at once (board_an385.c, board_rv32.c). */
+}
+
+/* The cycle counter as 64 bits that do not wrap within a run. */
+uint64_t port_cycles(void)
+{
+#if BOARD_SLOW_TICKS > 0
+    /* Slow counter first: the fast one is then at least its estimate and
+     * less than one slow tick beyond it, so the low 32 bits of the fast
+     * counter correct the estimate exactly. */
+    uint64_t est = (uint64_t)BOARD_SLOW_COUNTER * BOARD_SLOW_TICKS;
+    uint32_t fine = BOARD_FAST_COUNTER;
+    return est + (uint32_t)(fine - (uint32_t)est);
+#else
+    return BOARD_FAST_COUNTER;
+#endif
+}
+
+/* Converts a difference of two port_cycles() values to instructions,
+ * rounded to nearest. */
+uint64_t port_cycles_to_insns(uint64_t cycles)
+{
+    return (cycles * BOARD_INSNS_NUM + BOARD_INSNS_DEN / 2) /
+           BOARD_INSNS_DEN;
+}
+
+#else
+/* An empty translation unit is not valid C. */
+typedef int board_template_is_disabled;
+#endif
