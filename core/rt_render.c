@@ -236,7 +236,8 @@ static void pixel(const rt_tracer *tr, const cam_frame *cf,
         }
     }
     for (int k = 0; k < 3; k++)
-        rgb8[k] = fx_to_u8((fx_t)(spp == 1 ? sum[k] : (sum[k] + spp / 2) / spp));
+        rgb8[k] = fx_to_u8(
+            (fx_t)(spp == 1 ? sum[k] : (sum[k] + spp / 2) / spp));
 }
 
 size_t rt_buffer_bytes(const rt_options *o)

@@ -55,7 +55,8 @@ size_t rt_row_bytes(const rt_options *o);
 size_t rt_buffer_bytes(const rt_options *o);
 
 /* Renders rows y0 <= y < y1 (top row is 0) into row_buf (rt_buffer_bytes()
- * bytes), calling fn after each. Rows are independent: any split into bands gives the same bytes.
+ * bytes), calling fn after each. Rows are independent: any split into
+ * bands gives the same bytes.
  * stats may be NULL. Returns RT_OK, RT_ERR_ARG for bad options or rows, or
  * for a scene outside the parser's ranges (colours in [0, 1], light and
  * ambient colours in [0, 16], coefficients in [0, 1], reflect +

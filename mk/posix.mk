@@ -48,5 +48,5 @@ $(HOST_BUILD)/core $(HOST_BUILD)/port/posix:
 
 .PHONY: run
 run: $(FIXTRACE)
-	$(FIXTRACE) -W 640 -H 480 -o seed.ppm scenes/seed.scene
-	@echo "wrote $(CURDIR)/seed.ppm"
+	$(FIXTRACE) -q -W 640 -H 480 -o seed.ppm scenes/seed.scene
+	@echo "wrote $(CURDIR)/seed.ppm (640x480)"

@@ -2,6 +2,8 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
 
 #include "cli_util.h"
 
@@ -36,6 +38,40 @@ const char *cli_value(int argc, char **argv, int *i, const char *opt)
         return NULL;
     }
     return argv[++*i];
+}
+
+int cli_unknown_option(const char *opt)
+{
+    for (size_t k = 0; k < sizeof valued / sizeof valued[0]; k++) {
+        size_t n = strlen(valued[k]);
+        if (strncmp(opt, valued[k], n) == 0 && opt[n] != '\0')
+            return cli_error("unknown option '%s' (write '%s %s'; see "
+                             "fixtrace --help)", opt, valued[k],
+                             opt + n + (opt[n] == '='));
+    }
+    return cli_error("unknown option '%s' (see fixtrace --help)", opt);
+}
+
+static int ends_with_ci(const char *s, const char *suffix)
+{
+    size_t n = strlen(s), m = strlen(suffix);
+    return n >= m && strcasecmp(s + n - m, suffix) == 0;
+}
+
+int cli_check_output(const char *out, const char *scene)
+{
+    struct stat a, b;
+    if (strcmp(out, "-") == 0)
+        return 0;
+    if (!ends_with_ci(out, ".ppm") && !ends_with_ci(out, ".pnm") &&
+        !ends_with_ci(out, ".png"))
+        return cli_error("cannot write '%s': the output name must end in "
+                         ".ppm or .png (or be - for PPM on stdout)", out);
+    if (stat(out, &a) == 0 && stat(scene, &b) == 0 && a.st_dev == b.st_dev &&
+        a.st_ino == b.st_ino)
+        return cli_error("the output '%s' is the scene file itself; name "
+                         "the image with -o NAME.png", out);
+    return 0;
 }
 
 int cli_long(const char *opt, const char *val, long lo, long hi, long *out)

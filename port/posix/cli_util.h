@@ -28,6 +28,14 @@ int cli_needs_value(const char *opt);
  * naming the option and returns 2 if it is not one. */
 int cli_long(const char *opt, const char *val, long lo, long hi, long *out);
 
+/* Says an option is unknown, with a hint for a glued value ("-j2" or
+ * "--width=640"); returns 2. */
+int cli_unknown_option(const char *opt);
+
+/* Checks an output name: "-", or ending in .ppm, .pnm or .png, and not the
+ * scene file itself. Prints why not and returns 2; 0 if fine. */
+int cli_check_output(const char *out, const char *scene);
+
 /* Reads a whole file (at most CLI_MAX_SCENE_BYTES) into a malloc'ed
  * buffer; NULL with a message in err on failure. */
 char *cli_read_file(const char *path, size_t *len, char *err, size_t errlen);

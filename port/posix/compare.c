@@ -172,14 +172,15 @@ static int parse_args(int argc, char **argv, compare_args *a)
         double v;
         if (strcmp(opt, "--diff") == 0) {
             if (!val || !*val) {
-                fprintf(stderr, "compare: --diff needs a file name\n");
+                fprintf(stderr, "fixtrace compare: --diff needs a file name\n");
                 return 2;
             }
             a->diff = val;
             i++;
         } else if (strcmp(opt, "--min-psnr") == 0) {
             if (parse_num(val, &v)) {
-                fprintf(stderr, "compare: --min-psnr needs a number of "
+                fprintf(stderr, "fixtrace compare: "
+                                "--min-psnr needs a number of "
                                 "dB\n");
                 return 2;
             }
@@ -188,7 +189,8 @@ static int parse_args(int argc, char **argv, compare_args *a)
             i++;
         } else if (strcmp(opt, "--max-bad") == 0) {
             if (parse_num(val, &v) || v < 0 || v > 100) {
-                fprintf(stderr, "compare: --max-bad needs a percentage, "
+                fprintf(stderr, "fixtrace compare: "
+                                "--max-bad needs a percentage, "
                                 "0 to 100\n");
                 return 2;
             }
@@ -197,7 +199,8 @@ static int parse_args(int argc, char **argv, compare_args *a)
             i++;
         } else if (strcmp(opt, "--max-interior-outliers") == 0) {
             if (parse_num(val, &v) || v < 0 || v != floor(v)) {
-                fprintf(stderr, "compare: --max-interior-outliers needs a "
+                fprintf(stderr, "fixtrace compare: "
+                                "--max-interior-outliers needs a "
                                 "whole number, 0 or more\n");
                 return 2;
             }
@@ -205,20 +208,21 @@ static int parse_args(int argc, char **argv, compare_args *a)
             a->has_interior = 1;
             i++;
         } else if (opt[0] == '-' && opt[1] != '\0') {
-            fprintf(stderr, "compare: unknown option %s\n", opt);
+            fprintf(stderr, "fixtrace compare: unknown option %s\n", opt);
             usage(stderr);
             return 2;
         } else if (npath < 2) {
             a->path[npath++] = opt;
         } else {
-            fprintf(stderr, "compare: more than two images given (%s)\n",
+            fprintf(stderr, "fixtrace compare: "
+                            "more than two images given (%s)\n",
                     opt);
             usage(stderr);
             return 2;
         }
     }
     if (npath != 2) {
-        fprintf(stderr, "compare: needs two images\n");
+        fprintf(stderr, "fixtrace compare: needs two images\n");
         usage(stderr);
         return 2;
     }
@@ -245,18 +249,21 @@ static int check_thresholds(const compare_args *a, const compare_result *r)
 {
     int missed = 0;
     if (a->has_psnr && !(r->psnr >= a->min_psnr)) {
-        fprintf(stderr, "compare: FAIL: PSNR %.2f dB is below --min-psnr "
+        fprintf(stderr, "fixtrace compare: "
+                        "FAIL: PSNR %.2f dB is below --min-psnr "
                         "%g\n", r->psnr, a->min_psnr);
         missed = 1;
     }
     if (a->has_bad && r->bad_pct > a->max_bad) {
-        fprintf(stderr, "compare: FAIL: %.3f %% of pixels off by > %d is "
+        fprintf(stderr, "fixtrace compare: "
+                        "FAIL: %.3f %% of pixels off by > %d is "
                         "above --max-bad %g\n",
                 r->bad_pct, COMPARE_BAD_LEVEL, a->max_bad);
         missed = 1;
     }
     if (a->has_interior && (double)r->interior_outliers > a->max_interior) {
-        fprintf(stderr, "compare: FAIL: %ld outliers away from edges is "
+        fprintf(stderr, "fixtrace compare: "
+                        "FAIL: %ld outliers away from edges is "
                         "above --max-interior-outliers %.0f\n",
                 r->interior_outliers, a->max_interior);
         missed = 1;
@@ -283,13 +290,14 @@ int compare_main(int argc, char **argv)
     memset(img, 0, sizeof img);
     for (i = 0; i < 2; i++) {
         if (ppm_read(args.path[i], &img[i], err, sizeof err)) {
-            fprintf(stderr, "compare: %s\n", err);
+            fprintf(stderr, "fixtrace compare: %s\n", err);
             ppm_free(&img[0]);
             return 2;
         }
     }
     if (compare_images(&img[0], &img[1], &res)) {
-        fprintf(stderr, "compare: sizes differ: %s is %dx%d, %s is %dx%d\n",
+        fprintf(stderr, "fixtrace compare: "
+                        "sizes differ: %s is %dx%d, %s is %dx%d\n",
                 args.path[0], img[0].width, img[0].height, args.path[1],
                 img[1].width, img[1].height);
         ppm_free(&img[0]);
@@ -300,10 +308,12 @@ int compare_main(int argc, char **argv)
     rc = check_thresholds(&args, &res);
     if (args.diff) {
         if (compare_heatmap(&img[0], &img[1], &heat)) {
-            fprintf(stderr, "compare: out of memory for the diff image\n");
+            fprintf(stderr, "fixtrace compare: "
+                            "out of memory for the diff image\n");
             rc = 2;
         } else if (ppm_save(args.diff, &heat, err, sizeof err)) {
-            fprintf(stderr, "compare: cannot write the diff image: %s\n",
+            fprintf(stderr, "fixtrace compare: "
+                            "cannot write the diff image: %s\n",
                     err);
             rc = 2;
         }

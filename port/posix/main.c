@@ -18,6 +18,7 @@
 
 #include "cli_util.h"
 #include "compare.h"
+#include "emit_c.h"
 #include "image_out.h"
 #include "ref_render.h"
 #include "rt_parse.h"
@@ -40,7 +41,7 @@ typedef struct {
     const char *scene_path;
     const char *out_path;
     long width, height, spp, depth, jobs, adaptive;
-    int stats, quiet, reference, build_flags;
+    int stats, quiet, reference, build_flags, emit_c;
     const char *format; /* rgb888 (default), rgb565le, rgb565be */
     int dither;
 } cli;
@@ -54,6 +55,7 @@ static void usage(FILE *f)
 "SYNOPSIS\n"
 "    fixtrace [options] SCENE\n"
 "    fixtrace compare A.ppm B.ppm [--diff D.ppm] [--min-psnr DB] [--max-bad PCT]\n"
+"                     [--max-interior-outliers N]\n"
 "\n"
 "DESCRIPTION\n"
 "    Renders the scene file SCENE (see docs/scene-format.md) and writes a\n"
@@ -66,9 +68,12 @@ static void usage(FILE *f)
 "                        the current directory); - writes PPM to stdout\n"
 "    -W, --width N       image width, 1..4096 (default: the scene's)\n"
 "    -H, --height N      image height, 1..4096 (default: the scene's)\n"
-"    -s, --spp N         samples per pixel: 1, 4, 9 or 16\n"
+"    -s, --spp N         samples per pixel: 1, 4, 9 or 16 (default: the\n"
+"                        scene's)\n"
 "    -d, --depth N       reflection/refraction depth, 0..RT_MAX_DEPTH (5)\n"
-"    -j, --jobs N        render with N threads, 1..64 (same bytes as -j 1)\n"
+"                        (default: the scene's)\n"
+"    -j, --jobs N        render with N threads, 1..64 (default 1; the same\n"
+"                        bytes as -j 1)\n"
 "        --adaptive T    adaptive anti-aliasing: only pixels whose 3x3\n"
 "                        neighbourhood differs by more than T (1..255, in\n"
 "                        8-bit levels) get the full -s grid; needs -s > 1\n"
@@ -76,8 +81,11 @@ static void usage(FILE *f)
 "        --stats         print ray counters and timing on stderr\n"
 "        --build-flags   print the -DRT_NO_* flags that remove every effect\n"
 "                        the scene (at this spp) does not need, and exit\n"
+"        --emit-c        print the parsed scene as a C constant (for\n"
+"                        firmware without the parser), and exit\n"
 "        --format F      rows as rgb888 (default), rgb565le or rgb565be;\n"
-"                        565 output is expanded back to a viewable PPM\n"
+"                        565 output is expanded back to 8 bits a channel,\n"
+"                        in the PPM or PNG\n"
 "        --dither        ordered dithering for the 565 formats\n"
 "    -q, --quiet         no progress bar, no messages on success\n"
 "    -h, --help          this text\n"
@@ -176,10 +184,12 @@ static int parse_args(int argc, char **argv, cli *c)
             c->reference = 1;
         } else if (strcmp(a, "--build-flags") == 0) {
             c->build_flags = 1;
+        } else if (strcmp(a, "--emit-c") == 0) {
+            c->emit_c = 1;
         } else if (a[0] == '-' && a[1] != '\0') {
             if (cli_needs_value(a))
                 return 2; /* cli_value already said what was missing */
-            return cli_error("unknown option '%s' (see fixtrace --help)", a);
+            return cli_unknown_option(a);
         } else {
             if (c->scene_path)
                 return cli_error("more than one scene given ('%s' and '%s')",
@@ -339,6 +349,10 @@ static int render_scene(const cli *c, const rt_scene *scene)
                                                         : RT_RGB888;
     j.opt.dither = (uint8_t)c->dither;
     j.opt.adaptive = (uint8_t)c->adaptive;
+    if (c->adaptive && j.opt.spp == 1)
+        return cli_error("--adaptive needs more than one sample per pixel; "
+                         "%s renders at 1 spp, so add -s 4, 9 or 16",
+                         c->scene_path);
     j.render = c->reference ? ref_render_rows : rt_render_rows;
     if (c->reference && c->adaptive)
         return cli_error("--adaptive is a fixed-point core mode; the "
@@ -361,6 +375,10 @@ static int render_scene(const cli *c, const rt_scene *scene)
     if (!path) {
         fprintf(stderr, "fixtrace: out of memory\n");
         return 1;
+    }
+    if (cli_check_output(path, c->scene_path) != 0) {
+        free(out_path);
+        return 2;
     }
     j.out = image_out_open(path, j.opt.width, j.opt.height, j.opt.format,
                            c->jobs > 1, err, sizeof err);
@@ -490,5 +508,7 @@ int main(int argc, char **argv)
     free(text);
     if (c.build_flags)
         return print_build_flags(&c, &scene);
+    if (c.emit_c)
+        return emit_c_scene(stdout, &scene, c.scene_path) == 0 ? 0 : 1;
     return render_scene(&c, &scene);
 }

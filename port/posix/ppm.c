@@ -99,6 +99,12 @@ int ppm_parse(const uint8_t *buf, size_t len, ppm_image *img, char *err,
     size_t pos = 2, need;
     long w, h, maxval;
     memset(img, 0, sizeof *img);
+    if (len >= 4 && buf[0] == 0x89 && buf[1] == 'P' && buf[2] == 'N' &&
+        buf[3] == 'G') {
+        seterr(err, errlen, "a PNG, but compare reads PPM only: render "
+               "with -o NAME.ppm");
+        return -1;
+    }
     if (len < 2 || buf[0] != 'P' || buf[1] != '6') {
         seterr(err, errlen, "not a binary PPM (the file must start with P6)");
         return -1;
