@@ -160,6 +160,8 @@ static int64_t column(const rt_cam_frame *cf, int64_t s, unsigned width)
         return -1;
     if (s >= S_INF)
         return (int64_t)width;
+    if (cf->step == 0) /* fov so small every ray is w: no column to tell */
+        return s < 0 ? -1 : (int64_t)width;
     /* s = k step / 2^16 with k = 2 x n + 2 i + 1 - W n. */
     int64_t k = floor_div(s * 65536, cf->step);
     return floor_div(k + (int64_t)width * cf->n, 2 * (int64_t)cf->n);

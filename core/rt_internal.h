@@ -17,8 +17,13 @@
 typedef struct {
     fx_vec3 o;     /* origin */
     fx_vec3 d;     /* unit direction */
+    int32_t e;     /* rt_unit_err(d): |d|^2 - 1 in Q32.32 */
     uint8_t small; /* rt_small3(o): the 32-bit intersection paths apply */
 } rt_ray;
+
+/* |d|^2 - 1 of a unit direction, in Q32.32 (rounding leaves |d| a little
+ * off 1; the bounding-sphere test corrects for it). */
+int32_t rt_unit_err(fx_vec3 d);
 
 /* 1 if every component of v is below 2^29 (8192 units) in magnitude:
  * differences of two such points fit 32 bits. */

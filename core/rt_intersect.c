@@ -11,6 +11,18 @@
  */
 #include "rt_internal.h"
 
+/* Ulps (plus 2^-17 of the size) by which quads reach past their edges. */
+#define RT_QUAD_SLACK 2
+
+/* Frame ulps by which a cylinder's or cone's caps and side overlap at
+ * their rims. */
+#define RT_RIM_SLACK 2
+
+/* Below these (raw frame units) a ray is within rounding of a cone's
+ * generator direction: no linear root, and not treated as steep. */
+#define RT_LINEAR_MIN_B 256
+#define RT_STEEP_MIN_A 256
+
 #if !defined(RT_NO_SPHERE) || !defined(RT_NO_QUAD) || !defined(RT_NO_BOX) || \
     !defined(RT_NO_CYLINDER) || !defined(RT_NO_CONE)
 #define RT_ANY_SHAPE 1
@@ -31,6 +43,16 @@ int rt_small3(fx_vec3 v)
            (uint32_t)v.y + (lim >> 1) < lim && (uint32_t)v.z + (lim >> 1) < lim;
 }
 
+int32_t rt_unit_err(fx_vec3 d)
+{
+    /* |d|^2 - 1 as Q32.32: each component is within an ulp, so |e| is far
+     * below 2^18. The closest approach is (oc.d) / |d|^2, not oc.d:
+     * without the factor its error is e |oc| (half a unit for a sphere
+     * 30000 units away, however near its surface); with the first-order
+     * t (1 - e) it is e^2 |oc|. */
+    return (int32_t)((int64_t)fx_v3_len2_q32(d) - ((int64_t)1 << 32));
+}
+
 /* small: the object's centre and radius are rt_small3 (rt_object.small). */
 static int bsphere(const fx_vec3 *cp, fx_t r, int small, const rt_ray *ray,
                    fx_t tmin, fx_t tmax, int64_t *tca, uint64_t *disc,
@@ -46,6 +68,7 @@ static int bsphere(const fx_vec3 *cp, fx_t r, int small, const rt_ray *ray,
                     (int64_t)oz * ray->d.z;
         /* |t| <= |oc| < sqrt(3) 2^30, so t fits; t +- r may not. */
         int32_t t32 = (int32_t)((q + 0x8000) >> 16);
+        t32 -= (int32_t)(((int64_t)t32 * ray->e + ((int64_t)1 << 31)) >> 32);
         if ((int64_t)t32 + r <= tmin || (int64_t)t32 - r >= tmax)
             return 0;
         /* Each h component is bounded by |oc| (h is a projection). */
@@ -65,6 +88,7 @@ static int bsphere(const fx_vec3 *cp, fx_t r, int small, const rt_ray *ray,
         /* |oc| < 2^33 and |d| <= 2^16: each product stays below 2^49. */
         int64_t q = ox * ray->d.x + oy * ray->d.y + oz * ray->d.z;
         t = (q + 0x8000) >> 16;
+        t -= (t * ray->e + ((int64_t)1 << 31)) >> 32;
         if (t + r <= tmin || t - r >= tmax)
             return 0; /* wholly behind the origin or beyond tmax */
         h[0] = ox - ((t * ray->d.x + 0x8000) >> 16);
@@ -115,6 +139,22 @@ uint32_t rt_udiv64_32(uint64_t n, uint32_t d)
     return q1 * b + q0;
 }
 
+/* Distance along d (d != 0) from coordinate o to the plane at coordinate
+ * p, truncated: hit_quad's formula for an axis-aligned quad, so that
+ * shapes lying in such a quad's plane tie with it exactly. A distance of
+ * 2^32 or more (beyond any tmax) comes back as INT64_MAX or -INT64_MAX. */
+static int64_t plane_t(int64_t p, fx_t o, fx_t d)
+{
+    int64_t num = (p - o) * 65536; /* |p - o| < 2^33 */
+    uint64_t un = (uint64_t)(num < 0 ? -num : num);
+    uint32_t ud = (uint32_t)(d < 0 ? -(int64_t)d : d);
+    int neg = (num < 0) != (d < 0);
+    if ((un >> 32) >= ud)
+        return neg ? -INT64_MAX : INT64_MAX;
+    int64_t q = rt_udiv64_32(un, ud); /* the same truncation as C's / */
+    return neg ? -q : q;
+}
+
 /* Accepts t if tmin < t < tmax and nearer than the best so far. */
 static int take(int64_t t, fx_t tmin, fx_t *best)
 {
@@ -137,6 +177,8 @@ static int hit_sphere(const rt_object *o, const rt_ray *r, fx_t tmin,
     if (!bsphere(&o->a, o->r, o->small, r, tmin, tmax, &tca, &disc, h))
         return 0;
     int64_t thc = fx_sqrt_q32(disc);
+    /* In units of |d| = sqrt(1 + e): thc (1 - e / 2). */
+    thc -= (thc * r->e + ((int64_t)1 << 32)) >> 33;
     if (!take(tca - thc, tmin, &best) && !take(tca + thc, tmin, &best))
         return 0;
     *t = best;
@@ -176,8 +218,15 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
     int64_t qz = (int64_t)r->o.z + ((tt * r->d.z + 0x8000) >> 16) - o->a.z;
     int64_t u = qx * o->pu.x + qy * o->pu.y + qz * o->pu.z;
     int64_t v = qx * o->pv.x + qy * o->pv.y + qz * o->pv.z;
-    if (u < 0 || v < 0 || u > ((int64_t)o->lu << 16) ||
-        v > ((int64_t)o->lv << 16))
+    /* Inclusive by RT_QUAD_SLACK ulps plus 2^-17 of the quad's size: pu
+     * and pv are rounded to 2^-16, so (p - a).pu at a shared edge can land
+     * just outside both neighbours, by an amount that grows with the
+     * quad. Adjacent quads overlap by that much instead of leaving a
+     * crack. */
+    const int64_t sl = ((int64_t)RT_QUAD_SLACK << 16) +
+                       (((int64_t)o->lu + o->lv) >> 1);
+    if (u < -sl || v < -sl || u > ((int64_t)o->lu << 16) + sl ||
+        v > ((int64_t)o->lv << 16) + sl)
         return 0;
     *t = (fx_t)tt;
     *part = 0;
@@ -197,6 +246,15 @@ static int hit_box(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
     fx_t tn = FX_MIN, tf = FX_MAX;
     int an = 0, af = 0;
     for (int i = 0; i < 3; i++) {
+        if (inv[i] == FX_MAX || inv[i] == FX_MIN) {
+            /* |d_i| <= 2 ulps, so 1/d_i saturated: (b - o) * inv would
+             * put a face as near as 0.5 units for |b - o| of one ulp.
+             * The ray is parallel to this slab: outside it, a miss;
+             * inside it (both faces inclusive) no constraint on t. */
+            if (org[i] < lo[i] || org[i] > hi[i])
+                return 0;
+            continue;
+        }
         fx_t t1 = fx_mul(fx_sub(lo[i], org[i]), inv[i]);
         fx_t t2 = fx_mul(fx_sub(hi[i], org[i]), inv[i]);
         if (t1 > t2) {
@@ -215,16 +273,30 @@ static int hit_box(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
     }
     if (tn > tf)
         return 0;
-    /* part: the axis of the face, entry face first, else exit face. */
+    /* part: the axis of the face, entry face first, else exit face. Its
+     * distance is then taken as hit_quad takes it for an axis-aligned
+     * plane, so a face lying in a floor quad's plane ties with it exactly
+     * (the earlier object wins, without z-fighting). */
+    const fx_t *dir = &r->d.x;
     if (tn > tmin && tn < tmax) {
-        *t = tn;
-        *part = (uint8_t)an;
-        return 1;
+        int64_t tw = dir[an] == 0 ? tn
+                     : plane_t(dir[an] > 0 ? lo[an] : hi[an], org[an],
+                               dir[an]);
+        if (tw > tmin && tw < tmax) {
+            *t = (fx_t)tw;
+            *part = (uint8_t)an;
+            return 1;
+        }
     }
     if (tf > tmin && tf < tmax) {
-        *t = tf;
-        *part = (uint8_t)af;
-        return 1;
+        int64_t tw = dir[af] == 0 ? tf
+                     : plane_t(dir[af] > 0 ? hi[af] : lo[af], org[af],
+                               dir[af]);
+        if (tw > tmin && tw < tmax) {
+            *t = (fx_t)tw;
+            *part = (uint8_t)af;
+            return 1;
+        }
     }
     return 0;
 }
@@ -249,12 +321,31 @@ static int64_t from_frame(int64_t tca, fx_t tl, int k)
 }
 
 /* Roots of a t^2 + 2 b t + c = 0 (Q16.16), cancellation-free: q = -(b +
- * sign(b) sqrt(b^2 - ac)), roots q / a and c / q. Returns the count. */
-static int quadratic(fx_t a, fx_t b, fx_t c, fx_t root[2])
+ * sign(b) sqrt(b^2 - ac)), roots q / a and c / q. Returns the count: one
+ * root when a = 0 (a ray along a cone's generator). a, b and c are each
+ * rounded to half an ulp, so b^2 - ac is known only to |b| + (|a| + |c|)/2
+ * (plus the rounding of the products): a discriminant negative by less is
+ * a double root (a tangent), not a miss; a wider tolerance would admit
+ * rays passing beside a cone's apex. `real`: the roots are known to be
+ * real (a ray steeper than a cone's side meets both nappes), so any
+ * negative discriminant is rounding. */
+static int quadratic(fx_t a, fx_t b, fx_t c, int real, fx_t root[2])
 {
+    if (a == 0) {
+        /* One root, -c / 2b; b and c both shrink as the ray nears the
+         * generator itself, and their ratio becomes noise: none then. */
+        if (b > -RT_LINEAR_MIN_B && b < RT_LINEAR_MIN_B)
+            return 0;
+        root[0] = root[1] = fx_div(fx_neg(c), 2 * b); /* |b| < 2^30 */
+        return 1;
+    }
     int64_t disc = (int64_t)b * b - (int64_t)a * c;
-    if (disc < 0)
-        return 0;
+    if (disc < 0) {
+        if (!real && disc < -((int64_t)fx_abs(b) +
+                              ((int64_t)fx_abs(a) + fx_abs(c)) / 2 + 1))
+            return 0;
+        disc = 0;
+    }
     fx_t sq = (fx_t)fx_sqrt_q32((uint64_t)disc);
     fx_t q = b >= 0 ? fx_neg(fx_add(b, sq)) : fx_sub(sq, b);
     if (q == 0) {
@@ -295,11 +386,28 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
         c = fx_from_q32((int64_t)px * px + (int64_t)pz * pz -
                         (int64_t)ky * ky);
     }
-    if (a != 0) {
-        int n = quadratic(a, b, c, root);
+    /* Clearly steeper than the side (not within rounding of a
+     * generator's direction, where one root is far and saturates). */
+    int steep = cone && a < -RT_STEEP_MIN_A;
+    int n = quadratic(a, b, c, steep, root);
+    if (steep && n == 2) {
+        /* A ray steeper than the side meets each nappe once: the root
+         * with the lower y is on the cone, however near the apex rounding
+         * puts it (a y <= uh threshold there lets rays through). */
+        if ((dy > 0) != (root[0] < root[1]))
+            root[0] = root[1];
+        n = 1;
+    }
+    {
         for (int i = 0; i < n; i++) {
             fx_t y = fx_add(py, fx_mul(root[i], dy));
-            if (y < -uh || y > uh)
+            /* The side reaches RT_RIM_SLACK frame ulps past each cap's
+             * plane, as the caps reach past the side's radius below: the
+             * two are rounded separately, and no ray may pass between. A
+             * cone's apex meets no cap, so it gets no slack: past it lies
+             * the mirrored nappe. */
+            if (y < -uh - RT_RIM_SLACK ||
+                (y > uh + (cone ? 0 : RT_RIM_SLACK) && !steep))
                 continue;
             if (take(from_frame(tca, root[i], k), tmin, &best)) {
                 *part = 0;
@@ -313,12 +421,19 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
         for (int cap = 0; cap < 2; cap++) {
             if (!(o->caps & (cap ? RT_CAP_TOP : RT_CAP_BOTTOM)))
                 continue;
-            fx_t tl = fx_div(fx_sub(cap ? uh : -uh, py), dy);
+            /* t in world units, as hit_quad computes it for a plane
+             * y = const: a cap in a floor quad's plane (a shape standing
+             * on the floor) gives the very same t, so the tie goes to the
+             * earlier object instead of flipping with rounding. */
+            int64_t cy = cap ? 2 * (int64_t)o->bc.y - o->a.y : o->a.y;
+            int64_t tw = plane_t(cy, r->o.y, dy);
+            fx_t tl = to_frame(tw - tca, k);
             fx_t x = fx_add(px, fx_mul(tl, dx));
             fx_t z = fx_add(pz, fx_mul(tl, dz));
-            if ((int64_t)x * x + (int64_t)z * z > (int64_t)ur * ur)
+            if ((int64_t)x * x + (int64_t)z * z >
+                (int64_t)ur * ur + (int64_t)ur * (2 * RT_RIM_SLACK))
                 continue;
-            if (take(from_frame(tca, tl, k), tmin, &best)) {
+            if (take(tw, tmin, &best)) {
                 *part = (uint8_t)(1 + cap);
                 found = 1;
             }

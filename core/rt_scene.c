@@ -6,6 +6,10 @@
  * (k^2 must stay well inside Q16.16). */
 #define RT_MAX_CONE_SLOPE FX_INT(64)
 
+/* Raw ulps added to bounding-sphere radii, which must never cull a ray
+ * that meets the shape. */
+#define RT_BOUND_MARGIN 8
+
 void rt_scene_init(rt_scene *s)
 {
     memset(s, 0, sizeof *s);
@@ -63,7 +67,7 @@ static rt_status upright_bounds(rt_object *o)
     if (o->r <= 0 || o->h <= 0)
         return RT_ERR_DEGENERATE;
     o->bc = fx_v3(o->a.x, fx_add(o->a.y, hh), o->a.z);
-    o->br = fx_add(fx_v3_length(fx_v3(o->r, hh, 0)), 1);
+    o->br = fx_add(fx_v3_length(fx_v3(o->r, hh, 0)), RT_BOUND_MARGIN);
     while (k < 15 && ((int64_t)o->br >> k) > FX_ONE)
         k++;
     while (k <= 0 && k > -15 && ((int64_t)o->br << -k) <= FX_HALF)
@@ -115,7 +119,10 @@ static rt_status prepare_shape(rt_object *o)
         o->bc = fx_v3_add(o->a, fx_v3_add(half1, half2));
         fx_t d1 = fx_v3_length(fx_v3_add(half1, half2));
         fx_t d2 = fx_v3_length(fx_v3_sub(half1, half2));
-        o->br = fx_add(d1 > d2 ? d1 : d2, 1);
+        /* The margin covers the halving above (under an ulp per
+         * component of bc and of the diagonals) and the rounding of the
+         * closest approach in the bounding test (about an ulp each). */
+        o->br = fx_add(d1 > d2 ? d1 : d2, RT_BOUND_MARGIN);
         o->convex = 1;
         return RT_OK;
     }
@@ -126,17 +133,20 @@ static rt_status prepare_shape(rt_object *o)
                              (fx_t)(((int64_t)o->b.y - o->a.y) / 2),
                              (fx_t)(((int64_t)o->b.z - o->a.z) / 2));
         o->bc = fx_v3_add(o->a, half);
-        o->br = fx_add(fx_v3_length(half), 1);
+        o->br = fx_add(fx_v3_length(half), RT_BOUND_MARGIN);
         o->convex = 1;
         return RT_OK;
     }
     case RT_CYLINDER:
-        o->convex = (o->caps & (RT_CAP_BOTTOM | RT_CAP_TOP)) ==
-                    (RT_CAP_BOTTOM | RT_CAP_TOP);
+        /* Open or capped: a ray leaving the outside of the side leaves
+         * the infinite solid cylinder, which is convex, and one leaving a
+         * cap's outside leaves the half-space that holds the whole shape;
+         * neither can meet the cylinder again. */
+        o->convex = 1;
         return upright_bounds(o);
     case RT_CONE:
         o->caps &= RT_CAP_BOTTOM;
-        o->convex = o->caps != 0;
+        o->convex = 1; /* as a cylinder: one nappe's solid is convex */
         if (o->r <= 0 || o->h <= 0)
             return RT_ERR_DEGENERATE;
         o->k = fx_div(o->r, o->h);

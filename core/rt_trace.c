@@ -49,6 +49,7 @@ void rt_ray_set(rt_ray *r, fx_vec3 o, fx_vec3 d)
 {
     r->o = o;
     r->d = d;
+    r->e = rt_unit_err(d);
     r->small = (uint8_t)rt_small3(o);
 }
 
@@ -152,7 +153,15 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
     if (m->texture != RT_TEX_NONE) /* read inside: see render-model.md */
         base = rt_texel(m, o, fx_v3_madd(p, ng_out, -RT_EPS));
 #endif
-    fx_vec3 p_out = fx_v3_madd(p, ng, RT_EPS);
+    /* Cylinders and cones are solved in a frame whose unit is 2^ushift
+     * ulps, so a secondary ray's root on its own surface is off by about
+     * that much over the cosine of its angle to the surface. Starting it
+     * 4 frame units off the surface (never less than EPS) keeps that root
+     * behind it at any angle: no acne on large open shapes' inner walls. */
+    fx_t off = RT_EPS;
+    if ((o->kind == RT_CYLINDER || o->kind == RT_CONE) && o->ushift > 4)
+        off = (fx_t)1 << (o->ushift + 2);
+    fx_vec3 p_out = fx_v3_madd(p, ng, off);
     unsigned skip_out = (o->convex && outside) ? oi : NO_SKIP;
     fx_t wl = fx_sub(fx_sub(FX_ONE, m->reflect), m->transparency);
     if (wl < 0)
@@ -242,7 +251,7 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
             unsigned skip_in =
                 (o->convex && (!outside || o->kind == RT_QUAD)) ? oi
                                                                  : NO_SKIP;
-            rt_ray_set(&tr2, fx_v3_madd(p, ng, -RT_EPS), td);
+            rt_ray_set(&tr2, fx_v3_madd(p, ng, -off), td);
             RT_COUNT(tr, refraction);
             rgb_madd(&c, rt_trace(tr, &tr2, depth + 1, skip_in),
                      m->transparency);

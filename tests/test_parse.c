@@ -476,7 +476,7 @@ static void test_full_scene(void)
     CHECK_EQ(S.obj[3].caps, RT_CAP_BOTTOM | RT_CAP_TOP);
     CHECK_EQ(S.obj[3].convex, 1);
     CHECK_EQ(S.obj[4].caps, 0);
-    CHECK_EQ(S.obj[4].convex, 0);
+    CHECK_EQ(S.obj[4].convex, 1); /* open, but its solid is convex */
     CHECK_EQ(S.obj[5].caps, RT_CAP_TOP);
     CHECK_EQ(S.obj[6].caps, RT_CAP_BOTTOM);
     CHECK_EQ(S.obj[7].caps, 0);

@@ -215,9 +215,9 @@ static void test_convexity(void)
     static const struct {
         uint8_t kind, caps, convex;
     } cases[] = {{RT_SPHERE, 0, 1},   {RT_QUAD, 0, 1},     {RT_BOX, 0, 1},
-                 {RT_CYLINDER, 0, 0}, {RT_CYLINDER, 1, 0}, {RT_CYLINDER, 2, 0},
-                 {RT_CYLINDER, 3, 1}, {RT_CONE, 0, 0},     {RT_CONE, 1, 1},
-                 {RT_CONE, 2, 0}};
+                 {RT_CYLINDER, 0, 1}, {RT_CYLINDER, 1, 1}, {RT_CYLINDER, 2, 1},
+                 {RT_CYLINDER, 3, 1}, {RT_CONE, 0, 1},     {RT_CONE, 1, 1},
+                 {RT_CONE, 2, 1}}; /* every solid is convex: render-model.md */
     size_t i;
     for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         memset(&o, 0, sizeof o);

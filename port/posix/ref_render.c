@@ -63,18 +63,11 @@ void ref_shape_from_object(const rt_object *obj, ref_shape *sh)
     sh->c = fxv(obj->c);
     sh->r = fxd(obj->r);
     sh->h = fxd(obj->h);
-    switch (sh->kind) {
-    case RT_CYLINDER:
-        sh->convex = sh->caps == both;
-        break;
-    case RT_CONE:
+    if (sh->kind == RT_CONE)
         sh->caps &= RT_CAP_BOTTOM; /* a cone has no top cap */
-        sh->convex = sh->caps != 0;
-        break;
-    default:
-        sh->convex = 1; /* sphere, quad, box */
-        break;
-    }
+    /* Every shape bounds a convex solid (an open cylinder or cone too):
+     * a ray leaving its outside cannot meet it again. */
+    sh->convex = 1;
 }
 
 /* Keeps t if it is a nearer acceptable hit than *best. */
