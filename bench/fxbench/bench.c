@@ -8,6 +8,7 @@
 #include <stdint.h>
 #include "fx_math.h"
 #include "fx_vec.h"
+#include "rt_internal.h"
 
 #define N 10000
 
@@ -116,6 +117,49 @@ static void report(const char *name, uint32_t ticks, uint32_t base)
         t1_ - t0_;                                                            \
     })
 
+static rt_ray R[N];
+
+/* One object of each kind, seed-scene sized, and rays from about 20 units
+ * away aimed within 1.5 bounding radii of its centre: roughly half hit.
+ * The figure is rt_intersect per call, bounding-sphere test included. */
+static void shapes(uint32_t bv)
+{
+    static const char *const names[RT_KIND_COUNT] = {
+        "sphere    ", "quad      ", "box       ", "cylinder  ", "cone      "
+    };
+    for (int kind = 0; kind < RT_KIND_COUNT; kind++) {
+        rt_object o;
+        uint8_t *z = (uint8_t *)&o;
+        for (unsigned k = 0; k < sizeof o; k++)
+            z[k] = 0;
+        o.kind = (uint8_t)kind;
+        o.a = fx_v3(FX_INT(1), 0, FX_INT(2));
+        o.b = kind == RT_QUAD ? fx_v3(FX_INT(4), 0, 0)
+                              : fx_v3(FX_INT(3), FX_INT(2), FX_INT(4));
+        o.c = fx_v3(0, FX_INT(3), FX_INT(1));
+        o.r = FX_INT(3) / 2;
+        o.h = FX_INT(3);
+        o.caps = RT_CAP_BOTTOM | RT_CAP_TOP;
+        rt_object_prepare(&o);
+        for (int i = 0; i < N; i++) {
+            fx_vec3 org = fx_v3(sgn(logu(16, 19)), FX_INT(6), -FX_INT(18));
+            fx_t reach = o.br + o.br / 2;
+            fx_vec3 aim = fx_v3(o.bc.x + (fx_t)(rnd() % (uint32_t)(2 * reach)) - reach,
+                                o.bc.y + (fx_t)(rnd() % (uint32_t)(2 * reach)) - reach,
+                                o.bc.z);
+            R[i].o = org;
+            R[i].d = fx_v3_normalize(fx_v3_sub(aim, org));
+            R[i].e = rt_unit_err(R[i].d);
+            R[i].small = (uint8_t)rt_small3(org);
+        }
+        fx_t t;
+        uint8_t part;
+        report(names[kind],
+               LOOP(rt_intersect(&o, &R[i], 128, FX_MAX, &t, &part) ? t : 0),
+               bv);
+    }
+}
+
 int main(void)
 {
     uint32_t b2, b1, b64, bv;
@@ -172,5 +216,6 @@ int main(void)
         report("normalize ", LOOP((u = fx_v3_normalize(V[i]), u.x ^ u.y ^ u.z)),
                bv);
     }
+    shapes(bv);
     return 0;
 }

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# fxbench: instructions per call of the fx_math / fx_vec operations on
+# fxbench: instructions per call of the fx_math / fx_vec operations and of
+# each intersection routine (rt_intersect per shape kind), on
 # Cortex-M3 and Cortex-M0 code, run on QEMU's mps2-an385 with
 # -icount shift=7 (deterministic: same binary, same count). Not part of
 # the main build.
@@ -26,7 +27,9 @@ for cpu in cortex-m3 cortex-m0; do
     $CC -mcpu=$cpu -mthumb $CFLAGS -I"$CORE" -Tbench/fxbench/link.ld \
         -Wl,--gc-sections -Wl,-Map="$elf.map" \
         bench/fxbench/startup.c bench/fxbench/bench.c \
-        "$CORE"/fx_math.c "$CORE"/fx_sqrt.c "$CORE"/fx_vec.c -lgcc -o "$elf"
+        "$CORE"/fx_math.c "$CORE"/fx_sqrt.c "$CORE"/fx_vec.c \
+        "$CORE"/rt_intersect.c "$CORE"/rt_scene.c \
+        -lgcc -o "$elf"
     echo "== $cpu ($CORE)"
     # QEMU prints semihosting SYS_WRITE0 text on stderr.
     qemu-system-arm -M mps2-an385 -display none -monitor none -serial none \
