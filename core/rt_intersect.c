@@ -139,6 +139,7 @@ uint32_t rt_udiv64_32(uint64_t n, uint32_t d)
     return q1 * b + q0;
 }
 
+#if !defined(RT_NO_BOX) || !defined(RT_NO_CYLINDER) || !defined(RT_NO_CONE)
 /* Distance along d (d != 0) from coordinate o to the plane at coordinate
  * p, truncated: hit_quad's formula for an axis-aligned quad, so that
  * shapes lying in such a quad's plane tie with it exactly. A distance of
@@ -154,6 +155,7 @@ static int64_t plane_t(int64_t p, fx_t o, fx_t d)
     int64_t q = rt_udiv64_32(un, ud); /* the same truncation as C's / */
     return neg ? -q : q;
 }
+#endif
 
 /* Accepts t if tmin < t < tmax and nearer than the best so far. */
 static int take(int64_t t, fx_t tmin, fx_t *best)
@@ -239,7 +241,11 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
 static int hit_box(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                    fx_t *t, uint8_t *part)
 {
-    const fx_t *lo = &o->a.x, *hi = &o->b.x, *org = &r->o.x;
+    /* Arrays, not pointers into the structs: indexing &v.x past x is
+     * undefined behaviour. */
+    const fx_t lo[3] = { o->a.x, o->a.y, o->a.z };
+    const fx_t hi[3] = { o->b.x, o->b.y, o->b.z };
+    const fx_t org[3] = { r->o.x, r->o.y, r->o.z };
     /* 1/d only for rays that reach a box's bounding sphere. */
     const fx_t inv[3] = { fx_recip(r->d.x), fx_recip(r->d.y),
                           fx_recip(r->d.z) };
@@ -277,7 +283,7 @@ static int hit_box(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
      * distance is then taken as hit_quad takes it for an axis-aligned
      * plane, so a face lying in a floor quad's plane ties with it exactly
      * (the earlier object wins, without z-fighting). */
-    const fx_t *dir = &r->d.x;
+    const fx_t dir[3] = { r->d.x, r->d.y, r->d.z };
     if (tn > tmin && tn < tmax) {
         int64_t tw = dir[an] == 0 ? tn
                      : plane_t(dir[an] > 0 ? lo[an] : hi[an], org[an],
@@ -427,6 +433,8 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
              * earlier object instead of flipping with rounding. */
             int64_t cy = cap ? 2 * (int64_t)o->bc.y - o->a.y : o->a.y;
             int64_t tw = plane_t(cy, r->o.y, dy);
+            if (tw <= tmin || tw >= best)
+                continue; /* take() would refuse it; keeps tw - tca small */
             fx_t tl = to_frame(tw - tca, k);
             fx_t x = fx_add(px, fx_mul(tl, dx));
             fx_t z = fx_add(pz, fx_mul(tl, dz));
@@ -489,7 +497,8 @@ fx_vec3 rt_normal(const rt_object *o, fx_vec3 p, uint8_t part)
         return o->n;
     case RT_BOX: {
         /* part is the axis of the face; its side is the one p lies on. */
-        const fx_t *pc = &p.x, *cc = &o->bc.x;
+        const fx_t pc[3] = { p.x, p.y, p.z };
+        const fx_t cc[3] = { o->bc.x, o->bc.y, o->bc.z };
         fx_t v[3] = { 0, 0, 0 };
         v[part] = pc[part] > cc[part] ? FX_ONE : -FX_ONE;
         return fx_v3(v[0], v[1], v[2]);

@@ -55,6 +55,8 @@ static int chunk(FILE *f, const char *type, const uint8_t *data, size_t n)
 
 int png_write(FILE *f, const uint8_t *rgb, int w, int h)
 {
+    if (w <= 0 || h <= 0)
+        return -1;
     static const uint8_t sig[8] = { 137, 80, 78, 71, 13, 10, 26, 10 };
     uint8_t ihdr[13];
     be32(ihdr, (uint32_t)w);
