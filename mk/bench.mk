@@ -65,3 +65,8 @@ minimal: $(MIN_ELF) fw-host-tool
 	    echo "image differs from the host's:"; \
 	    $(FIXTRACE) compare $(MIN_BUILD)/out.ppm $(MIN_BUILD)/host.ppm; \
 	fi
+
+.PHONY: bench
+# What fixtrace costs, written to docs/bench.md (tools/bench.sh).
+bench:
+	$(Q)MAKE="$(MAKE)" bash tools/bench.sh
