@@ -35,6 +35,7 @@ include mk/test.mk
 -include mk/lint.mk
 -include mk/bench.mk
 -include mk/docs.mk
+-include mk/accuracy.mk
 
 .PHONY: all clean print-%
 all: $(FIXTRACE)

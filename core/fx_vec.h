@@ -39,20 +39,28 @@ static inline fx_vec3 fx_v3_neg(fx_vec3 a)
     return fx_v3(fx_neg(a.x), fx_neg(a.y), fx_neg(a.z));
 }
 
-/* a * s per component; each rounded to nearest (ties toward +infinity)
- * as fx_mul, saturates. */
+/* a * s per component; each rounded as fx_mul (to nearest, ties toward
+ * +infinity; precise: ties to even; fast: down), saturates. */
 static inline fx_vec3 fx_v3_scale(fx_vec3 a, fx_t s)
 {
     return fx_v3(fx_mul(a.x, s), fx_mul(a.y, s), fx_mul(a.z, s));
 }
 
-/* a + b * s per component: one rounding per component, to nearest (ties
- * toward +infinity); saturates. */
+/* a * b rounded as fx_mul but not saturated: |result| <= 2^46. */
+static inline int64_t fx_mul_wide(fx_t a, fx_t b)
+{
+    int64_t p = (int64_t)a * b;
+    return (p + fx_round_bias(p)) >> 16;
+}
+
+/* a + b * s per component: one rounding per component, as fx_mul (to
+ * nearest, ties toward +infinity; precise: ties to even; fast: down);
+ * saturates. */
 static inline fx_vec3 fx_v3_madd(fx_vec3 a, fx_vec3 b, fx_t s)
 {
-    return fx_v3(fx_sat64((int64_t)a.x + (((int64_t)b.x * s + 0x8000) >> 16)),
-                 fx_sat64((int64_t)a.y + (((int64_t)b.y * s + 0x8000) >> 16)),
-                 fx_sat64((int64_t)a.z + (((int64_t)b.z * s + 0x8000) >> 16)));
+    return fx_v3(fx_sat64((int64_t)a.x + fx_mul_wide(b.x, s)),
+                 fx_sat64((int64_t)a.y + fx_mul_wide(b.y, s)),
+                 fx_sat64((int64_t)a.z + fx_mul_wide(b.z, s)));
 }
 
 /* Exact dot product as Q32.32, for operands where one side is bounded by
@@ -63,33 +71,37 @@ static inline int64_t fx_v3_dot_q32(fx_vec3 a, fx_vec3 b)
     return (int64_t)a.x * b.x + (int64_t)a.y * b.y + (int64_t)a.z * b.z;
 }
 
-/* Dot product with a bounded operand (as fx_v3_dot_q32), rounded once to
- * nearest (ties toward +infinity); saturates. */
+/* Dot product with a bounded operand (as fx_v3_dot_q32), rounded once as
+ * fx_from_q32 (to nearest, ties toward +infinity; precise: ties to even;
+ * fast: down); saturates. */
 static inline fx_t fx_v3_dotn(fx_vec3 a, fx_vec3 b)
 {
     return fx_from_q32(fx_v3_dot_q32(a, b));
 }
 
 /* Dot product of any two vectors: the three exact products are summed
- * without overflow for every input, then rounded once to nearest (ties
- * toward +infinity); saturates. */
+ * without overflow for every input, then rounded once as fx_from_q32;
+ * saturates. */
 fx_t fx_v3_dot(fx_vec3 a, fx_vec3 b);
 
 /* Exact |a|^2 as unsigned Q32.32; never overflows (at most 3 * 2^62). */
 uint64_t fx_v3_len2_q32(fx_vec3 a);
 
-/* Cross product; each component exact in 64 bits, then rounded once to
- * nearest (ties toward +infinity); saturates. */
+/* Cross product; each component exact in 64 bits, then rounded once as
+ * fx_from_q32; saturates. */
 fx_vec3 fx_v3_cross(fx_vec3 a, fx_vec3 b);
 
-/* Length, correctly rounded to nearest from the exact |a|^2; saturates to
- * FX_MAX (only for lengths that round to 32768 or more). */
+/* Length, correctly rounded to nearest from the exact |a|^2 (fast: within
+ * 1 ulp, as fx_sqrt_q32); saturates to FX_MAX (only for lengths that
+ * round to 32768 or more). */
 fx_t fx_v3_length(fx_vec3 a);
 
 /* Unit vector along a: each component within 1 ulp of the true value (at
  * most 0.5 + 2^-4 ulp; it is not correctly rounded) and never past +-1, for
  * tiny and huge vectors alike, since the squared length is exact in 64
- * bits; cannot overflow. The zero vector gives the zero vector. */
+ * bits; cannot overflow. The zero vector gives the zero vector. Precise:
+ * each component correctly rounded (ties away from zero). Fast: within
+ * 0.7 ulp (an interpolated table instead of the polynomial). */
 fx_vec3 fx_v3_normalize(fx_vec3 a);
 
 #endif /* FX_VEC_H */

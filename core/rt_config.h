@@ -56,6 +56,15 @@
 #define RT_STATS 1
 #endif
 
+/* Accuracy of the math layer (core/fx_*): 0 = fast (rounds down; roots,
+ * divide and normalize within 1-2 ulps without correction steps),
+ * 1 = default (correctly rounded; the reference checksums), 2 = precise
+ * (ties to even, normalize correctly rounded). fx_math.h states each
+ * operation's bound; docs/accuracy.md measures cost against image error. */
+#ifndef RT_ACCURACY
+#define RT_ACCURACY 1
+#endif
+
 /* 1: camera rays test only the objects their pixel row and column can
  * reach (rt_cull.c; costs RT_MAX_OBJECTS * 6 bytes of stack). 0: every
  * camera ray tests every object. The image is the same either way. */
@@ -65,7 +74,8 @@
 
 /* ---- Effect removal (default off; see docs/effects.md) ------------------
  * Each flag removes the code for one effect. A scene that needs a removed
- * effect is refused by rt_scene_check_build(), never rendered wrongly.
+ * effect is refused (rt_render_rows returns RT_ERR_UNSUPPORTED), never
+ * rendered wrongly; make firmware derives the flags from the scene.
  * RT_NO_REFLECTION, RT_NO_REFRACTION, RT_NO_TEXTURES, RT_NO_BUMP,
  * RT_NO_SHADOWS, RT_NO_SPECULAR, RT_NO_SUPERSAMPLING, RT_NO_MULTILIGHT,
  * RT_NO_SPHERE, RT_NO_QUAD, RT_NO_BOX, RT_NO_CYLINDER, RT_NO_CONE. */

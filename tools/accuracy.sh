@@ -1,0 +1,255 @@
+#!/usr/bin/env bash
+# accuracy.sh: what accuracy costs. Measures every row of the table in
+# docs/accuracy.md and writes docs/accuracy.md and docs/accuracy.svg again
+# (`make accuracy` runs it). Needs gcc, make, awk, arm-none-eabi-gcc and
+# qemu-system-arm; nothing else.
+#
+# For each accuracy setting (RT_ACCURACY 0 fast, 1 default, 2 precise) and
+# scene: instructions per pixel on Cortex-M3 and M0 (QEMU -icount, exact),
+# host time per pixel (median of ACC_RUNS runs, noisy), and the error
+# against the double reference (fixtrace --reference). Also spp and depth
+# for the default setting on the seed, and the reference renderer itself
+# as firmware in soft double and soft float (bench/softref).
+#
+# Environment: ACC_JOBS (QEMU runs at once, default 2), ACC_RUNS (host
+# timing runs, default 7), ACC_WIDTH / ACC_HEIGHT (default 320 x 240).
+# Work files go to build/accuracy/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+# Until the top Makefile includes mk/accuracy.mk, name it explicitly (in
+# MK, not in MAKE, which recursive makes inherit).
+MK=${MAKE:-make}
+grep -q 'mk/accuracy\.mk' Makefile || MK="$MK -f Makefile -f mk/accuracy.mk"
+JOBS=${ACC_JOBS:-2}
+RUNS=${ACC_RUNS:-7}
+W=${ACC_WIDTH:-320}
+H=${ACC_HEIGHT:-240}
+WORK=build/accuracy
+SCENES="seed glass primitives"
+NAMES=(fast default precise)
+
+# ---- One measurement job (run in parallel by xargs) -------------------------
+
+# Instructions and pixels from a firmware log, as "instructions pixels".
+log_counts() {
+    awk '/^instructions /{i=$2} /^pixels /{p=$2} END{print i+0, p+0}' "$1"
+}
+
+# fw BOARD ACC: every configuration of one fixed-point firmware, one after
+# the other in one build directory (only the scene and main.c rebuild).
+job_fw() {
+    local board=$1 acc=$2 dir=$WORK/fw-$1-acc$2 cfg tag scene spp
+    while read -r tag scene spp; do
+        if ! $MK -s qemu BOARD="$board" FW_BUILD="$dir" \
+            FW_DEFS="-DRT_ACCURACY=$acc" SCENE="$scene" WIDTH="$W" \
+            HEIGHT="$H" SPP="$spp" >"$dir.$tag.out" 2>&1; then
+            echo "accuracy: $board acc$acc $tag failed:" >&2
+            tail -n 5 "$dir.$tag.out" >&2
+            return 1
+        fi
+        log_counts "$dir/qemu.log" >"$WORK/res/fw-$board-$acc-$tag"
+        cp "$dir/out.ppm" "$WORK/img/fw-$board-$acc-$tag.ppm"
+    done < <(configs "$acc")
+}
+
+# sr VARIANT SCENES...: the reference renderer as firmware.
+job_sr() {
+    local v=$1 s
+    shift
+    for s in "$@"; do
+        if ! $MK -s softref-qemu SR="$v" SCENE="scenes/$s.scene" \
+            WIDTH="$W" HEIGHT="$H" SPP=1 >"$WORK/sr-$v.$s.out" 2>&1; then
+            echo "accuracy: softref $v $s failed:" >&2
+            tail -n 5 "$WORK/sr-$v.$s.out" >&2
+            return 1
+        fi
+        log_counts "build/softref-$v/qemu.log" >"$WORK/res/sr-$v-$s"
+        cp "build/softref-$v/out.ppm" "$WORK/img/sr-$v-$s.ppm"
+    done
+}
+
+# The configurations of a setting: "tag scene-file spp". Every setting
+# renders the three scenes; the default also the spp and depth axes.
+configs() {
+    local s d
+    for s in $SCENES; do
+        echo "$s scenes/$s.scene 1"
+    done
+    if [ "$1" = 1 ]; then
+        echo "seed-s4 scenes/seed.scene 4"
+        echo "seed-s16 scenes/seed.scene 16"
+        for d in 0 1 2 3; do
+            echo "seed-d$d $WORK/scenes/seed-d$d.scene 1"
+        done
+    fi
+}
+
+if [ "${1:-}" = --job ]; then
+    shift
+    kind=$1
+    shift
+    "job_$kind" "$@"
+    exit
+fi
+
+# ---- Set-up -------------------------------------------------------------------
+
+for tool in arm-none-eabi-gcc qemu-system-arm awk; do
+    command -v "$tool" >/dev/null || {
+        echo "accuracy: $tool not found (see README.md)" >&2
+        exit 1
+    }
+done
+start=$SECONDS
+mkdir -p "$WORK/res" "$WORK/img" "$WORK/scenes" "$WORK/host"
+rm -f "$WORK"/res/* "$WORK"/img/*
+
+# Depth variants of the seed: only its `image` line's depth differs.
+for d in 0 1 2 3; do
+    sed -E "s/^(image .*depth) [0-9]+/\1 $d/" scenes/seed.scene \
+        >"$WORK/scenes/seed-d$d.scene"
+    grep -q "^image .*depth $d" "$WORK/scenes/seed-d$d.scene" || {
+        echo "accuracy: no depth on the seed's image line" >&2
+        exit 1
+    }
+done
+
+echo "accuracy: host builds"
+for acc in 0 1 2; do
+    $MK -s -j"$JOBS" SANITIZE= HOST_BUILD=build/posix-acc$acc \
+        RT_DEFS=-DRT_ACCURACY=$acc build/posix-acc$acc/fixtrace
+done
+REF=build/posix-acc1/fixtrace
+
+# Scene file and spp of a tag (seed, seed-s4, seed-d2, glass, ...).
+tag_scene() {
+    case $1 in
+    seed-d*) echo "$WORK/scenes/$1.scene" ;;
+    seed-s*) echo scenes/seed.scene ;;
+    *) echo "scenes/$1.scene" ;;
+    esac
+}
+tag_spp() {
+    case $1 in
+    seed-s*) echo "${1#seed-s}" ;;
+    *) echo 1 ;;
+    esac
+}
+
+echo "accuracy: host renders and references"
+for tag in $SCENES seed-s4 seed-s16 seed-d0 seed-d1 seed-d2 seed-d3; do
+    $REF -q --reference -W "$W" -H "$H" -s "$(tag_spp "$tag")" \
+        -o "$WORK/img/ref-$tag.ppm" "$(tag_scene "$tag")"
+done
+for acc in 0 1 2; do
+    for tag in $(configs "$acc" | awk '{print $1}'); do
+        build/posix-acc$acc/fixtrace -q -W "$W" -H "$H" \
+            -s "$(tag_spp "$tag")" -o "$WORK/img/host-$acc-$tag.ppm" \
+            "$(tag_scene "$tag")"
+    done
+done
+
+echo "accuracy: firmware runs under QEMU ($JOBS at once)"
+{
+    for acc in 1 0 2; do
+        echo "fw m0 $acc"
+        echo "fw an385 $acc"
+    done
+    echo "sr m0-f64 seed"
+    echo "sr m3-f64 $SCENES"
+    echo "sr m0-f32 seed"
+    echo "sr m3-f32 $SCENES"
+    echo "sr m4f-f32 $SCENES"
+} | xargs -P "$JOBS" -L 1 bash "$0" --job
+
+# ---- Host time: nothing else runs now; still noisy ----------------------------
+
+echo "accuracy: host timing ($RUNS runs each)"
+median() {
+    sort -g | awk '{ v[NR] = $1 }
+        END { if (NR % 2) print v[(NR + 1) / 2]
+              else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
+}
+host_time() { # fixtrace-binary tag [--reference]: median microseconds/pixel
+    local bin=$1 tag=$2 i
+    shift 2
+    for ((i = 0; i < RUNS; i++)); do
+        "$bin" --stats "$@" -W "$W" -H "$H" -s "$(tag_spp "$tag")" \
+            -o "$WORK/host/t.ppm" "$(tag_scene "$tag")" 2>&1 |
+            awk '/^render_seconds /{print $2}'
+    done | median | awk -v p=$((W * H)) '{printf "%.3f\n", $1 * 1e6 / p}'
+}
+for acc in 0 1 2; do
+    for tag in $(configs "$acc" | awk '{print $1}'); do
+        host_time build/posix-acc$acc/fixtrace "$tag" >"$WORK/res/host-$acc-$tag"
+    done
+done
+for tag in $SCENES; do
+    host_time "$REF" "$tag" --reference >"$WORK/res/host-ref-$tag"
+done
+
+# ---- Compare and tabulate --------------------------------------------------------
+
+# "psnr max_err bad_pct" of image $1 against $2 (psnr "inf" if identical).
+errors() {
+    $REF compare "$1" "$2" | awk '
+        /^PSNR:/ { p = ($2 == "inf") ? "inf" : $2 }
+        /^max error:/ { split($3, a, "/"); m = a[1] }
+        /^off by > 2:/ { b = $5 }
+        END { print p, m, b }'
+}
+res() { cat "$WORK/res/$1" 2>/dev/null || echo "- -"; }
+ipp() { # instructions per pixel from a result file, or -
+    res "$1" | awk '{ if ($2 > 0) printf "%.1f", $1 / $2; else print "-" }'
+}
+
+# One row per line, tab-separated: label scene spp depth m3 m0 m4f host
+# psnr maxerr bad identical(firmware == host image)
+TSV=$WORK/results.tsv
+: >"$TSV"
+depth_of() {
+    awk '/^image /{for (i = 1; i < NF; i++) if ($i == "depth") print $(i + 1)}' \
+        "$(tag_scene "$1")"
+}
+for acc in 0 1 2; do
+    for tag in $(configs "$acc" | awk '{print $1}'); do
+        e=$(errors "$WORK/img/host-$acc-$tag.ppm" "$WORK/img/ref-$tag.ppm")
+        same=yes
+        for b in an385 m0; do
+            cmp -s "$WORK/img/fw-$b-$acc-$tag.ppm" \
+                "$WORK/img/host-$acc-$tag.ppm" || same=no
+        done
+        printf '%s\t%s\t%s\t%s\t%s\t%s\t-\t%s\t%s\t%s\n' \
+            "${NAMES[$acc]}" "${tag%%-*}" "$(tag_spp "$tag")" \
+            "$(depth_of "$tag")" "$(ipp "fw-an385-$acc-$tag")" \
+            "$(ipp "fw-m0-$acc-$tag")" "$(res "host-$acc-$tag")" \
+            "$(echo "$e" | tr ' ' '\t')" "$same" >>"$TSV"
+    done
+done
+for prec in f32 f64; do
+    for s in $SCENES; do
+        e=$(errors "$WORK/img/sr-m3-$prec-$s.ppm" "$WORK/img/ref-$s.ppm")
+        m0=-
+        [ -f "$WORK/res/sr-m0-$prec-$s" ] && m0=$(ipp "sr-m0-$prec-$s")
+        m4=-
+        [ "$prec" = f32 ] && m4=$(ipp "sr-m4f-f32-$s")
+        host=-
+        [ "$prec" = f64 ] && host=$(res "host-ref-$s")
+        label="reference, float32"
+        [ "$prec" = f64 ] && label="reference, double"
+        printf '%s\t%s\t1\t%s\t%s\t%s\t%s\t%s\t%s\t-\n' "$label" "$s" \
+            "$(depth_of "$s")" "$(ipp "sr-m3-$prec-$s")" "$m0" "$m4" \
+            "$host" "$(echo "$e" | tr ' ' '\t')" >>"$TSV"
+    done
+done
+# The M4F float32 image must be the M3 float32 image (same IEEE single).
+m4same=yes
+for s in $SCENES; do
+    cmp -s "$WORK/img/sr-m4f-f32-$s.ppm" "$WORK/img/sr-m3-f32-$s.ppm" ||
+        m4same=no
+done
+
+elapsed=$((SECONDS - start))
+bash tools/accuracy_report.sh "$TSV" "$m4same" "$W" "$H" "$RUNS" "$elapsed"
+echo "accuracy: wrote docs/accuracy.md and docs/accuracy.svg in ${elapsed} s"
