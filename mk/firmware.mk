@@ -8,18 +8,31 @@
 # (nRF51, Cortex-M0, 16 KB RAM), an505 (Cortex-M33), rv32 (QEMU virt).
 # WIDTH, HEIGHT and SPP of 0 mean "the scene's default"; ADAPTIVE=T
 # (1..255, with SPP > 1) turns on adaptive anti-aliasing (docs/effects.md).
-# The scene text is embedded in the image and parsed on the device.
 # FW_APP=bringup builds port/baremetal/bringup.c instead of the renderer
 # (no core needed).
 # FW_DEFS adds -D options to every C file (for example -DRT_MAX_DEPTH=3).
 #
-# PRUNE=1 (the default) builds only the effects SCENE needs at the SPP the
-# firmware renders: the host tool's `fixtrace --build-flags` derives the
-# RT_NO_* flags (docs/effects.md) into build/<b>/fw_effects.h, which every
-# C file includes first, so changing SCENE or SPP rebuilds what it must.
-# PRUNE=0 builds every effect (for comparison). A scene the host cannot
-# parse is built unpruned, so that the device reports the error. FW_BUILD
-# (default build/<b>) moves the build, e.g. to keep two variants apart.
+# PRUNE=1 (the default) builds the firmware for SCENE alone
+# (docs/effects.md):
+# - the host tool (build/posix/fixtrace) parses SCENE; a scene it cannot
+#   parse fails the build with the parser's file:line:col message;
+# - `fixtrace --emit-c` writes the parsed scene as constant tables,
+#   build/<b>/scene_tables.c, which the image carries instead of the text:
+#   no parser (core/rt_parse.c) and no scene text are linked;
+# - `fixtrace --build-flags` derives the RT_NO_* flags that remove every
+#   effect the scene does not need at the SPP the firmware renders;
+# - RT_MAX_OBJECTS, RT_MAX_MATERIALS and RT_MAX_LIGHTS are the scene's
+#   counts. A capacity the board (FW_CAPS) or FW_DEFS sets is an upper
+#   limit: a scene above it fails the build, naming the limit.
+# The flags and capacities go to build/<b>/fw_effects.h, which every C file
+# includes first, so changing SCENE or SPP rebuilds what it must.
+# A FW_DEFS that changes the parsed values (-DRT_ACCURACY=n,
+# -DRT_MAX_DEPTH=n) gets a host tool built with it, under build/posix-fw*.
+#
+# PRUNE=0 builds every effect, embeds the scene text (port/baremetal/
+# scene.S) and parses it on the device, as the host does: any scene, and
+# the device reports a scene that does not parse. FW_BUILD (default
+# build/<b>) moves the build, e.g. to keep two variants apart.
 
 BOARD ?= an385
 SCENE ?= scenes/seed.scene
@@ -107,19 +120,40 @@ FW_CC := $(FW_PREFIX)gcc
 FW_SIZE := $(FW_PREFIX)size
 FW_NAME := $(if $(filter bringup,$(FW_APP)),bringup,fixtrace)
 FW_ELF := $(FW_BUILD)/$(FW_NAME).elf
+# FW_PRUNING: 1 for a renderer built for SCENE alone (PRUNE=1), which
+# carries the scene as tables (FW_TABLES_C) instead of its text (scene.S).
+FW_PRUNING := $(if $(filter 1,$(PRUNE)),$(if $(filter bringup,$(FW_APP)),,1))
+
+# The capacities a pruned build takes from the scene (fw_effects.h); the
+# board's or FW_DEFS' values of them are limits, not -D options, there.
+# (PRUNE alone decides, so that a bringup build has the same flags as the
+# renderer and switching between them rebuilds nothing.)
+FW_SCENE_CAPS := RT_MAX_OBJECTS RT_MAX_MATERIALS RT_MAX_LIGHTS
+FW_CAP_OPTS := $(FW_SCENE_CAPS:%=-D%=%)
+fw_scene_caps_out = $(if $(filter 1,$(PRUNE)),$(filter-out \
+    $(FW_CAP_OPTS),$1),$1)
+# fw_cap_limit NAME: the last -DNAME=v of FW_CAPS and FW_DEFS, if any.
+fw_cap_limit = $(lastword $(patsubst -D$1=%,%,$(filter -D$1=%,$(FW_CAPS) \
+    $(FW_DEFS))))
 
 FW_EFFECTS := $(FW_BUILD)/fw_effects.h
 FW_CFLAGS := -std=c99 $(FW_OPT) -g $(FW_CPU) -ffreestanding \
-    -ffunction-sections -fdata-sections -DRT_STATS=0 $(FW_CAPS) \
-    -include $(FW_EFFECTS) $(FW_DEFS)
+    -ffunction-sections -fdata-sections -DRT_STATS=0 \
+    $(call fw_scene_caps_out,$(FW_CAPS)) -include $(FW_EFFECTS) \
+    $(call fw_scene_caps_out,$(FW_DEFS))
 FW_LDFLAGS := $(FW_CPU) -nostdlib -T $(FW_LD) -Wl,--gc-sections \
     -Wl,-Map=$(FW_BUILD)/$(FW_NAME).map -Wl,--no-warn-rwx-segments
 
 FW_PORT_SRC := port/baremetal/common.c port/baremetal/semihost.c \
     port/baremetal/libc.c $(FW_BOARD_SRC)
+FW_TABLES_C := $(FW_BUILD)/scene_tables.c
 ifeq ($(FW_APP),bringup)
 FW_SRC := $(FW_PORT_SRC) port/baremetal/bringup.c
 FW_SCENE_OBJ :=
+else ifeq ($(FW_PRUNING),1)
+FW_SRC := $(filter-out core/rt_parse.c,$(CORE_SRC)) $(FW_PORT_SRC) \
+    port/baremetal/main.c
+FW_SCENE_OBJ := $(FW_BUILD)/scene_tables.o
 else
 FW_SRC := $(CORE_SRC) $(FW_PORT_SRC) port/baremetal/main.c
 FW_SCENE_OBJ := $(FW_BUILD)/scene.o
@@ -160,42 +194,81 @@ $(FW_CONFIG): fw-force | fw-check-board
 	    '#define FW_WIDTH $(WIDTH)' '#define FW_HEIGHT $(HEIGHT)' \
 	    '#define FW_SPP $(SPP)' '#define FW_ADAPTIVE $(ADAPTIVE)' \
 	    '#define FW_BRINGUP $(FW_BRINGUP)' \
+	    '#define FW_SCENE_TABLES $(if $(FW_PRUNING),1,0)' \
 	    | $(call fw_update,$@)
 
-# The effects the scene needs. The host tool is built first, under a lock:
-# parallel firmware builds (tests/suite_firmware.sh runs one per board)
-# would otherwise compile the same host objects at the same time. A bringup
-# build needs no core and leaves the file as it is, so that switching
-# between it and the renderer does not rebuild the core.
-FW_PRUNING := $(if $(filter 1,$(PRUNE)),$(if $(filter bringup,$(FW_APP)),,1))
+# The host tool is built first, under a lock: parallel firmware builds
+# (tests/suite_firmware.sh runs one per board) would otherwise compile the
+# same host objects at the same time. Settings that change the parsed
+# scene (FW_HOST_DEFS) need a host tool built with them: scene_tables.c
+# refuses to compile under other values.
+FW_HOST_DEFS := $(filter -DRT_ACCURACY=% -DRT_MAX_DEPTH=%,$(FW_DEFS))
+fw_empty :=
+fw_space := $(fw_empty) $(fw_empty)
+FW_HOST_BUILD := $(if $(FW_HOST_DEFS),build/posix-fw$(subst =,-,$(subst \
+    $(fw_space),,$(FW_HOST_DEFS:-DRT%=%))),$(HOST_BUILD))
+FW_FIXTRACE := $(if $(FW_HOST_DEFS),$(FW_HOST_BUILD)/fixtrace,$(FIXTRACE))
 FW_SPP_ARG := $(if $(filter-out 0,$(SPP)),-s $(SPP))
-FW_EFFECTS_NOTE := $(if $(FW_PRUNING),the effects $(SCENE) does not need$(if \
-    $(FW_SPP_ARG), at $(SPP) spp) are removed,every effect is kept \
+FW_EFFECTS_NOTE := $(if $(FW_PRUNING),built for $(SCENE)$(if \
+    $(FW_SPP_ARG), at $(SPP) spp) alone,every effect is kept \
     (PRUNE=$(PRUNE) FW_APP=$(FW_APP)))
-FW_EFFECTS_FALLBACK := every effect is kept (the host could not parse $(SCENE))
 FW_LOCK := $(if $(shell command -v flock 2>/dev/null),\
-    flock $(dir $(FIXTRACE)).fw-host.lock)
+    flock $(dir $(FW_FIXTRACE)).fw-host.lock)
 
 .PHONY: fw-host-tool
 fw-host-tool:
-	$(Q)mkdir -p $(dir $(FIXTRACE))
+	$(Q)mkdir -p $(dir $(FW_FIXTRACE))
 	$(Q)$(FW_LOCK) $(MAKE) --no-print-directory -s -f $(firstword \
-	    $(MAKEFILE_LIST)) $(FIXTRACE)
+	    $(MAKEFILE_LIST)) $(if $(FW_HOST_DEFS),HOST_BUILD=$(FW_HOST_BUILD) \
+	    RT_DEFS='$(FW_HOST_DEFS)') $(FW_FIXTRACE)
 
-$(FW_EFFECTS): fw-force $(if $(FW_PRUNING),fw-host-tool) | fw-check-board
+# The scene as tables (PRUNE=1). A scene the host cannot parse stops the
+# build here, with the parser's message.
+$(FW_TABLES_C): fw-force fw-host-tool | fw-check-board
+	$(Q)mkdir -p $(@D)
+	$(Q)$(FW_FIXTRACE) --emit-c '$(SCENE)' >$@.$$$$ || { rm -f $@.$$$$; \
+	    echo "firmware: $(SCENE) does not parse (above); PRUNE=0 embeds" \
+	    "the text and lets the device report it" >&2; exit 1; }; \
+	if cmp -s $@.$$$$ $@; then rm -f $@.$$$$; else mv -f $@.$$$$ $@; \
+	    $(if $(Q),echo "  TABLES  $(SCENE)";) fi
+
+# What the firmware is built for: the RT_NO_* flags of the effects SCENE
+# does not need and, as its counts, the capacities (PRUNE=1); nothing with
+# PRUNE=0. A bringup build needs no core and leaves the file as it is, so
+# that switching between it and the renderer does not rebuild the core.
+$(FW_EFFECTS): fw-force $(if $(FW_PRUNING),fw-host-tool $(FW_TABLES_C)) \
+               | fw-check-board
 	$(Q)mkdir -p $(@D)
 	$(Q)case '$(PRUNE)' in 0|1) ;; *) echo "PRUNE must be 0 or 1, got" \
 	    "'$(PRUNE)'" >&2; exit 1;; esac
 	$(Q)$(if $(filter bringup,$(FW_APP)),test ! -f $@ || exit 0;) \
-	flags=; note='$(FW_EFFECTS_NOTE)'; \
-	$(if $(FW_PRUNING),if ! flags=$$($(FIXTRACE) --build-flags \
-	    $(FW_SPP_ARG) '$(SCENE)'); then flags=; \
-	    note='$(FW_EFFECTS_FALLBACK)'; echo "firmware: $$note; the" \
-	    "device will report the problem" >&2; fi;) \
-	{ echo "/* Generated by mk/firmware.mk: $$note. */"; \
-	  for f in $$flags; do echo "#define $${f#-D} 1"; done; } >$@.$$$$; \
+	flags=; caps=; \
+	if [ -n '$(FW_PRUNING)' ]; then \
+	    flags=$$($(FW_FIXTRACE) --build-flags $(FW_SPP_ARG) '$(SCENE)') \
+	        || exit 1; \
+	    for c in $(foreach c,$(FW_SCENE_CAPS),$c=$(call fw_cap_limit,$c)); do \
+	        cap=$${c%=*}; lim=$${c#*=}; what=$${cap#RT_MAX_}; \
+	        n=$$(sed -n "s/^#define FW_SCENE_$$what \([0-9]*\)$$/\1/p" \
+	            $(FW_TABLES_C)); \
+	        [ -n "$$lim" ] || lim=$$(sed -n \
+	            "s/^#define $$cap \([0-9]*\)$$/\1/p" core/rt_config.h); \
+	        if [ -z "$$n" ] || [ -z "$$lim" ]; then \
+	            echo "firmware: no count for $$cap" >&2; exit 1; fi; \
+	        if [ "$$n" -gt "$$lim" ]; then \
+	            echo "firmware: $(SCENE) has $$n" \
+	                "$$(echo $$what | tr A-Z a-z), but the build for" \
+	                "BOARD=$(BOARD) allows at most $$lim ($$cap=$$lim)" >&2; \
+	            exit 1; fi; \
+	        caps="$$caps $$cap=$$n"; \
+	    done; \
+	fi; \
+	{ echo "/* Generated by mk/firmware.mk: $(FW_EFFECTS_NOTE). */"; \
+	  for f in $$flags; do echo "#define $${f#-D} 1"; done; \
+	  for c in $$caps; do echo "#ifndef $${c%=*}"; \
+	      echo "#define $${c%=*} $${c#*=}"; echo "#endif"; done; \
+	} >$@.$$$$; \
 	if cmp -s $@.$$$$ $@; then rm -f $@.$$$$; else mv -f $@.$$$$ $@; \
-	    $(if $(Q),echo "  EFFECTS $(if $(FW_PRUNING),$(SCENE): )$${flags:-$$note}";) \
+	    $(if $(Q),echo "  EFFECTS $(if $(FW_PRUNING),$(SCENE): )$${flags:-$(FW_EFFECTS_NOTE)}$${caps}";) \
 	fi
 
 $(FW_FLAGS_STAMP): fw-force | fw-check-board
@@ -218,6 +291,10 @@ $(FW_BUILD)/port/baremetal/%.o: port/baremetal/%.c $(FW_FLAGS_STAMP) \
 	$(Q)mkdir -p $(@D)
 	$(Q)$(FW_CC) $(FW_CFLAGS) $(FW_EXTRA) $(WARN) -Icore -Iport/baremetal \
 	    -I$(FW_BUILD) -MMD -MP -c $< -o $@
+
+$(FW_BUILD)/scene_tables.o: $(FW_TABLES_C) $(FW_FLAGS_STAMP) $(FW_EFFECTS)
+	@$(if $(Q),echo "  CC      $< ($(BOARD))")
+	$(Q)$(FW_CC) $(FW_CFLAGS) $(CORE_WARN) -Icore -MMD -MP -c $< -o $@
 
 $(FW_BUILD)/scene.o: port/baremetal/scene.S $(FW_CONFIG) $(SCENE) \
                      $(FW_FLAGS_STAMP)
@@ -251,8 +328,9 @@ qemu: $(FW_ELF)
 	fi; \
 	exit $$rc
 
-# Flash holds .text, .rodata (with the scene text), .ARM.exidx and the
-# initial .data; RAM holds .data, .bss and the reserved stack.
+# Flash holds .text, .rodata (with the scene, as tables or text),
+# .ARM.exidx and the initial .data; RAM holds .data, .bss and the reserved
+# stack.
 size: $(FW_ELF)
 	$(Q)$(FW_SIZE) -A $< | awk -v board=$(BOARD) ' \
 	    $$1 == ".text" { t = $$2 } $$1 == ".rodata" { r = $$2 } \

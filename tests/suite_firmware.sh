@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
-# The firmware on every QEMU board (an385, m0, microbit, an505, rv32):
-# rendering on the device gives the same bytes as the host, for the seed
-# scene and one other, at 48x36; each board's instruction counter is exact
-# (a loop of known length); a stack overflow ends the run with a fault code
-# instead of hanging it; a bad embedded scene exits 2 with a message; the
-# M0 images use no soft-float helpers; and the micro:bit build fits in its
-# 16 KB of RAM and renders the seed scene at 320x240.
+# The firmware on every QEMU board (an385, m0, microbit, an505, rv32), in
+# both scene modes (mk/firmware.mk): rendering on the device gives the same
+# bytes as the host, for the seed scene as tables (PRUNE=1, the default: no
+# parser linked) and for one other scene as text parsed on the device
+# (PRUNE=0), at 48x36; each board's instruction counter is exact (a loop
+# of known length); a stack overflow ends the run with a fault code instead
+# of hanging it; a bad scene fails a PRUNE=1 build on the host with its
+# file:line:col, and a PRUNE=0 firmware exits 2 with a message; the M0
+# images use no soft-float helpers; and the micro:bit build, parser and
+# rt_scene in RAM, fits in its 16 KB and renders the seed scene at 320x240.
 #
 # Boards run in parallel, each with its own build/<board>/ directory. A
 # board whose cross compiler or QEMU is missing is skipped, with the
@@ -66,14 +69,18 @@ run_qemu() {
     fi
 }
 
-# render NAME SCENE W H REF: build, run, compare with the host render.
+# render NAME SCENE W H REF [TIMEOUT [MAKE ARGS...]]: build, run, compare
+# with the host render; then check the image's symbols (check_elf).
 render() {
     local name=$1 scene=$2 w=$3 h=$4 ref=$5 t=${6:-$TIMEOUT}
-    if ! fw firmware SCENE="$scene" WIDTH="$w" HEIGHT="$h"; then
+    shift 5
+    [ $# -gt 0 ] && shift
+    if ! fw firmware SCENE="$scene" WIDTH="$w" HEIGHT="$h" "$@"; then
         res "FAILED: $b $name: build failed: $(head -c 600 "$tmp/$b.log")"
         return 1
     fi
-    run_qemu "$name" "$t" SCENE="$scene" WIDTH="$w" HEIGHT="$h"
+    check_elf "$name" "$@"
+    run_qemu "$name" "$t" SCENE="$scene" WIDTH="$w" HEIGHT="$h" "$@"
     [ "$rc" = 0 ] || return 1
     if cmp -s "build/$b/out.ppm" "$ref"; then
         res ok
@@ -82,6 +89,35 @@ render() {
         res "FAILED: $b $name: device image differs from the host's" \
             "($(cmp "build/$b/out.ppm" "$ref" 2>&1 | head -n 1))"
     fi
+}
+
+# check_elf NAME [MAKE ARGS...]: no soft-float helper is linked into the
+# renderer, and the parser is linked exactly when the scene is text
+# (PRUNE=0 among the arguments).
+check_elf() {
+    local name=$1 elf=build/$b/fixtrace.elf nm=arm-none-eabi-nm
+    shift
+    [ "$b" = rv32 ] && nm=riscv64-unknown-elf-nm
+    syms=$("$nm" "$elf" | awk '{print $NF}')
+    sf=$(echo "$syms" | grep -E "$SOFT_FLOAT")
+    if [ -z "$sf" ]; then
+        res ok
+    else
+        res "FAILED: $b $name links soft-float helpers: $(echo $sf)"
+    fi
+    case " $* " in
+    *" PRUNE=0 "*)
+        echo "$syms" | grep -qx rt_parse && res ok ||
+            res "FAILED: $b $name: PRUNE=0 firmware without rt_parse" ;;
+    *)
+        if echo "$syms" | grep -qE '^rt_parse|^fw_scene_text$'; then
+            res "FAILED: $b $name: the tables firmware links the parser" \
+                "or the text: $(echo "$syms" | grep -E '^rt_parse|^fw_scene_text$')"
+        else
+            echo "$syms" | grep -qx fw_scene && res ok ||
+                res "FAILED: $b $name: no fw_scene tables in the image"
+        fi ;;
+    esac
 }
 
 run_board() {
@@ -94,9 +130,57 @@ run_board() {
         exec 9>"build/$b/.suite.lock"
         flock 9
     fi
-    render "$(basename "$SEED" .scene) ${W}x$H" "$SEED" $W $H "$tmp/seed.ppm"
-    render "$(basename "$OTHER" .scene) ${W}x$H" "$OTHER" $W $H \
-        "$tmp/other.ppm"
+    render "$(basename "$SEED" .scene) ${W}x$H tables" "$SEED" $W $H \
+        "$tmp/seed.ppm"
+    render "$(basename "$OTHER" .scene) ${W}x$H text" "$OTHER" $W $H \
+        "$tmp/other.ppm" "$TIMEOUT" PRUNE=0
+
+    case $b in
+    an385)
+        # A scene that does not parse. PRUNE=1: the host refuses to build
+        # it and says where. PRUNE=0: the device exits 2 and says where.
+        printf 'camera eye 0 0 -5 look 0 0 0 up 0 1 0 fov 60\nsphere center 0 0 0 radius 1 material nope\n' >"$tmp/bad.scene"
+        if fw firmware SCENE="$tmp/bad.scene"; then
+            res "FAILED: $b bad scene: the PRUNE=1 build succeeded"
+        elif grep -q "bad.scene:2:[0-9]*: error: material 'nope'" \
+            "$tmp/$b.log"; then
+            res ok
+        else
+            res "FAILED: $b bad scene: the PRUNE=1 build failed without" \
+                "the parser's message: $(head -c 300 "$tmp/$b.log")"
+        fi
+        if fw firmware SCENE="$tmp/bad.scene" PRUNE=0; then
+            want_rc=2 run_qemu "bad scene" "$TIMEOUT" \
+                SCENE="$tmp/bad.scene" PRUNE=0
+            if [ "$rc" = 2 ] && grep -q 'scene line 2 col' "$tmp/$b.log"; then
+                res ok
+            else
+                res "FAILED: $b bad scene: exit $rc, want 2 with a line" \
+                    "number: $(head -c 300 "$tmp/$b.log")"
+            fi
+        else
+            res "FAILED: $b bad scene: PRUNE=0 build failed:" \
+                "$(head -c 300 "$tmp/$b.log")"
+        fi
+        ;;
+    microbit)
+        # Everything, stack included, in 16 KB of RAM, in the mode that
+        # needs the most: the text parsed on the device into an rt_scene in
+        # RAM. The seed scene at 320x240 (which also checks the stack
+        # high-water mark on exit).
+        if render "$(basename "$SEED" .scene) 320x240 text" "$SEED" 320 240 \
+            "$tmp/seed320.ppm" 120 PRUNE=0; then
+            fw size SCENE="$SEED" WIDTH=320 HEIGHT=240 PRUNE=0
+            total=$(sed -nE 's/.*, total ([0-9]+)$/\1/p' "$tmp/$b.log")
+            if [ -n "$total" ] && [ "$total" -le 16384 ]; then
+                res ok
+            else
+                res "FAILED: microbit RAM: '$total' bytes, want <= 16384:" \
+                    "$(cat "$tmp/$b.log")"
+            fi
+        fi
+        ;;
+    esac
 
     # The counter: a two-instruction loop of 10^6 turns (bringup.c).
     if fw firmware FW_APP=bringup FW_BRINGUP=0; then
@@ -124,49 +208,6 @@ run_board() {
     else
         res "FAILED: $b bringup build: $(head -c 600 "$tmp/$b.log")"
     fi
-
-    # No soft-float helper may be linked into the renderer.
-    local elf=build/$b/fixtrace.elf nm=arm-none-eabi-nm
-    [ "$b" = rv32 ] && nm=riscv64-unknown-elf-nm
-    if fw firmware SCENE="$SEED" WIDTH=$W HEIGHT=$H; then
-        sf=$("$nm" "$elf" | awk '{print $NF}' | grep -E "$SOFT_FLOAT")
-        if [ -z "$sf" ]; then
-            res ok
-        else
-            res "FAILED: $b links soft-float helpers: $(echo $sf)"
-        fi
-    fi
-
-    case $b in
-    an385)
-        # A scene the device cannot parse: exit 2 and say where.
-        printf 'camera eye 0 0 -5 look 0 0 0 up 0 1 0 fov 60\nsphere center 0 0 0 radius 1 material nope\n' >"$tmp/bad.scene"
-        if fw firmware SCENE="$tmp/bad.scene"; then
-            want_rc=2 run_qemu "bad scene" "$TIMEOUT" SCENE="$tmp/bad.scene"
-            if [ "$rc" = 2 ] && grep -q 'scene line 2 col' "$tmp/$b.log"; then
-                res ok
-            else
-                res "FAILED: $b bad scene: exit $rc, want 2 with a line" \
-                    "number: $(head -c 300 "$tmp/$b.log")"
-            fi
-        fi
-        ;;
-    microbit)
-        # Everything, stack included, in 16 KB of RAM; the seed scene at
-        # 320x240 (which also checks the stack high-water mark on exit).
-        if render "$(basename "$SEED" .scene) 320x240" "$SEED" 320 240 \
-            "$tmp/seed320.ppm" 120; then
-            fw size SCENE="$SEED" WIDTH=320 HEIGHT=240
-            total=$(sed -nE 's/.*, total ([0-9]+)$/\1/p' "$tmp/$b.log")
-            if [ -n "$total" ] && [ "$total" -le 16384 ]; then
-                res ok
-            else
-                res "FAILED: microbit RAM: '$total' bytes, want <= 16384:" \
-                    "$(cat "$tmp/$b.log")"
-            fi
-        fi
-        ;;
-    esac
 }
 
 # Host references (the same core on the host).

@@ -2,11 +2,17 @@
 # Firmware built for what the scene needs (docs/effects.md), on the M3
 # (an385) at 48x36:
 # - `make firmware` derives the RT_NO_* flags from the scene itself: the
-#   generated build/.../fw_effects.h holds exactly `fixtrace --build-flags`;
-# - the pruned (PRUNE=1) and the full (PRUNE=0) firmware for the diffuse
-#   scene both render the host's bytes, and the pruned one is smaller;
-# - switching the same build to the seed scene re-derives the flags and
-#   rebuilds what they affect (it renders the host's bytes too);
+#   generated build/.../fw_effects.h holds exactly `fixtrace --build-flags`,
+#   and the scene's counts as its capacities;
+# - the pruned (PRUNE=1) firmware carries the scene as tables: neither the
+#   parser nor the scene text is linked; the full (PRUNE=0) one parses the
+#   text on the device;
+# - both render the host's bytes for the diffuse scene, and the pruned one
+#   takes at most half the full one's flash (the ratio is printed);
+# - switching the same build to the seed scene re-derives the flags, the
+#   capacities and the tables (it renders the host's bytes too);
+# - a scene with more objects than the build allows fails the build,
+#   naming the limit;
 # - a firmware with an effect removed by hand refuses the seed scene with
 #   a message naming the effect and exit status 4, and sends no image;
 # - the minimal renderer (bench/minimal) still renders the host's bytes.
@@ -66,7 +72,8 @@ for s in diffuse seed; do
         { bad "host render of $s failed"; }
 done
 
-# The three firmware variants build and run side by side.
+# The three firmware variants build and run side by side; the capacity
+# limit fails before any compiling.
 ( fw pruned qemu SCENE=$DIFFUSE PRUNE=1; echo $? >"$tmp/pruned.rc" ) &
 ( fw full qemu SCENE=$DIFFUSE PRUNE=0; echo $? >"$tmp/full.rc" ) &
 ( fw refuse qemu SCENE=$SEED PRUNE=1 FW_DEFS=-DRT_NO_REFLECTION
@@ -74,6 +81,11 @@ done
 ( "$MK" -s minimal BOARD=an385 WIDTH=$W HEIGHT=$H >"$tmp/minimal.log" 2>&1
   echo $? >"$tmp/minimal.rc" ) &
 wait
+fw caps firmware SCENE=$DIFFUSE PRUNE=1 FW_DEFS=-DRT_MAX_OBJECTS=3 &&
+    bad "diffuse (4 objects) built with RT_MAX_OBJECTS=3 as its limit" ||
+    { grep -q 'diffuse.scene has 4 objects.*at most 3 (RT_MAX_OBJECTS=3)' \
+        "$tmp/caps.log" && ok ||
+        bad "the capacity limit's message: $(tail -n 3 "$tmp/caps.log")"; }
 
 for v in pruned full; do
     if [ "$(cat "$tmp/$v.rc")" = 0 ] && cmp -s "$B/$v/out.ppm" "$tmp/diffuse.ppm"
@@ -97,12 +109,43 @@ got=$(sed -nE 's/^#define (RT_NO_[A-Z]+) 1$/\1/p' "$B/pruned/fw_effects.h" |
     ok ||
     bad "PRUNE=0 removed effects: $(cat "$B/full/fw_effects.h")"
 
-# Smaller: report the ratio; it must at least shrink.
+# caps NAME: the capacities in $B/NAME/fw_effects.h, "objects materials
+# lights"; want SCENE: the scene's counts, at least 1 each.
+caps() {
+    local c out=
+    for c in OBJECTS MATERIALS LIGHTS; do
+        out="$out $(sed -nE "s/^#define RT_MAX_$c ([0-9]+)$/\1/p" \
+            "$B/$1/fw_effects.h")"
+    done
+    echo $out
+}
+want_caps() {
+    awk '$1 ~ /^(sphere|quad|box|cylinder|cone)$/ { o++ }
+         $1 == "material" { m++ } $1 == "light" { l++ }
+         END { print (o ? o : 1), (m ? m : 1), (l ? l : 1) }' "$1"
+}
+[ "$(caps pruned)" = "$(want_caps $DIFFUSE)" ] && ok ||
+    bad "capacities '$(caps pruned)', want the scene's '$(want_caps $DIFFUSE)'"
+
+# syms NAME: the symbols of the firmware in $B/NAME.
+syms() { arm-none-eabi-nm "$B/$1/fixtrace.elf" | awk '{ print $NF }'; }
+if syms pruned | grep -qE '^rt_parse|^fw_scene_text$'; then
+    bad "the pruned firmware links the parser or the scene text:" \
+        "$(syms pruned | grep -E '^rt_parse|^fw_scene_text$' | tr '\n' ' ')"
+elif syms pruned | grep -qx fw_scene; then
+    ok
+else
+    bad "the pruned firmware has no fw_scene tables"
+fi
+syms full | grep -qx rt_parse && syms full | grep -qx fw_scene_text && ok ||
+    bad "the full firmware does not parse the scene text on the device"
+
+# At most half: the scene as tables instead of the text and the parser.
 fp=$(flash pruned) ff=$(flash full)
 echo "flash (text+rodata) at ${W}x$H: pruned $fp, full $ff" \
     "($(awk -v a="$fp" -v b="$ff" 'BEGIN { printf "%.1f", 100 * a / b }')%)"
-[ -n "$fp" ] && [ -n "$ff" ] && [ "$fp" -lt "$ff" ] && ok ||
-    bad "pruned flash '$fp' is not below full flash '$ff'"
+[ -n "$fp" ] && [ -n "$ff" ] && [ $((2 * fp)) -le "$ff" ] && ok ||
+    bad "pruned flash '$fp' is more than half the full flash '$ff'"
 
 # The same build directory, switched to the seed scene: the flags are
 # derived again and the core rebuilt with them.
@@ -115,6 +158,9 @@ else
 fi
 grep -q RT_NO_REFLECTION "$B/pruned/fw_effects.h" &&
     bad "switching to seed kept RT_NO_REFLECTION" || ok
+[ "$(caps pruned)" = "$(want_caps $SEED)" ] && ok ||
+    bad "switching to seed: capacities '$(caps pruned)', want" \
+        "'$(want_caps $SEED)'"
 
 # Refusal: exit 4, the effect named on stderr, no image bytes.
 rc=$(sed -nE 's/^qemu: firmware exit status ([0-9]+).*/\1/p' \

@@ -1,9 +1,17 @@
 /*
- * main.c: the fixtrace firmware. It parses the scene text embedded in the
- * image (scene.S) with the same rt_parse() the host uses, renders it one
- * scanline at a time and streams a binary PPM (P6) through port_write():
- * there is no frame buffer, only one row. The figures go to the text
- * channel as lines "name value":
+ * main.c: the fixtrace firmware. It renders the scene one scanline at a
+ * time and streams a binary PPM (P6) through port_write(): there is no
+ * frame buffer, only one row. The scene comes in one of two forms
+ * (mk/firmware.mk):
+ *
+ *   FW_SCENE_TABLES 1  the scene parsed on the host (`fixtrace --emit-c`,
+ *                      scene_tables.c): a constant rt_scene in flash, and
+ *                      no parser in the image. The pruned build (PRUNE=1).
+ *   FW_SCENE_TABLES 0  the scene text embedded in the image (scene.S),
+ *                      parsed here with the same rt_parse() the host uses
+ *                      (PRUNE=0).
+ *
+ * The figures go to the text channel as lines "name value":
  *
  *   instructions N   retired guest instructions from just before the first
  *                    row to just after the last (rendering and output)
@@ -15,18 +23,31 @@
  * from port.h (2 parse, 3 options, 4 render, including a scene that needs
  * an effect this build removed (docs/effects.md), 5 stack).
  *
- * The build (mk/firmware.mk) generates fw_config.h with FW_WIDTH,
+ * The build generates fw_config.h with FW_SCENE_TABLES, FW_WIDTH,
  * FW_HEIGHT and FW_SPP (0 means "the scene's default") and FW_ADAPTIVE
  * (0, or the adaptive anti-aliasing threshold of rt_options).
  */
 #include "port.h"
 #include "fw_config.h"
-#include "rt_parse.h"
 #include "rt_render.h"
+
+#ifndef FW_SCENE_TABLES
+#define FW_SCENE_TABLES 0
+#endif
+
+#if FW_SCENE_TABLES
+/* The parsed scene (scene_tables.c), read in place from flash. */
+extern const rt_scene fw_scene;
+#else
+#include "rt_parse.h"
 
 /* The scene text and its length in bytes (scene.S). */
 extern const char fw_scene_text[];
 extern const uint32_t fw_scene_len;
+
+/* In .bss, so `make size` accounts for it. */
+static rt_scene scene;
+#endif
 
 /* A stack that came this close to its reserved bottom may have overflowed
  * (a frame can skip over a few painted words). */
@@ -46,8 +67,7 @@ extern const uint32_t fw_scene_len;
 #define FW_BUF_PIXEL_BYTES 3
 #endif
 
-/* Both live in .bss, so `make size` accounts for them. */
-static rt_scene scene;
+/* In .bss, so `make size` accounts for it. */
 static uint8_t row_buf[FW_ROW_PIXELS * FW_BUF_PIXEL_BYTES];
 
 static void log_status(const char *what, rt_status st)
@@ -112,26 +132,39 @@ static void send_header(unsigned w, unsigned h)
     port_write(p, (size_t)(buf + sizeof buf - p));
 }
 
+/* The scene to render, or NULL (after saying why) when the text does not
+ * parse. */
+static const rt_scene *load_scene(void)
+{
+#if FW_SCENE_TABLES
+    return &fw_scene;
+#else
+    rt_parse_error err;
+    if (rt_parse(fw_scene_text, fw_scene_len, &scene, &err) == RT_OK)
+        return &scene;
+    port_log("fixtrace: scene line ");
+    port_log_u64(err.line);
+    port_log(" col ");
+    port_log_u64(err.col);
+    port_log(": ");
+    port_log(err.msg);
+    port_log("\n");
+    return 0;
+#endif
+}
+
 int main(void)
 {
-    rt_parse_error err;
+    const rt_scene *s;
     rt_options opt;
     rt_status st;
 
     port_init();
-    st = rt_parse(fw_scene_text, fw_scene_len, &scene, &err);
-    if (st != RT_OK) {
-        port_log("fixtrace: scene line ");
-        port_log_u64(err.line);
-        port_log(" col ");
-        port_log_u64(err.col);
-        port_log(": ");
-        port_log(err.msg);
-        port_log("\n");
+    s = load_scene();
+    if (!s)
         return PORT_EXIT_PARSE;
-    }
 
-    rt_options_from_scene(&opt, &scene);
+    rt_options_from_scene(&opt, s);
     if (FW_WIDTH > 0)
         opt.width = FW_WIDTH;
     if (FW_HEIGHT > 0)
@@ -154,7 +187,7 @@ int main(void)
         return PORT_EXIT_OPTIONS;
     }
 
-    uint32_t missing = rt_scene_features(&scene, opt.spp) &
+    uint32_t missing = rt_scene_features(s, opt.spp) &
                        ~rt_build_features();
     if (missing) {
         log_missing(missing);
@@ -163,7 +196,7 @@ int main(void)
 
     send_header(opt.width, opt.height);
     uint64_t t0 = port_cycles();
-    st = rt_render_rows(&scene, &opt, 0, opt.height, row_buf, send_row, 0,
+    st = rt_render_rows(s, &opt, 0, opt.height, row_buf, send_row, 0,
                         0);
     uint64_t t1 = port_cycles();
     if (st != RT_OK) {
