@@ -163,6 +163,10 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
         off = (fx_t)1 << (o->ushift + 2);
     fx_vec3 p_out = fx_v3_madd(p, ng, off);
     unsigned skip_out = (o->convex && outside) ? oi : NO_SKIP;
+#if defined(RT_NO_SHADOWS) && defined(RT_NO_REFLECTION) && \
+    defined(RT_NO_REFRACTION)
+    (void)p_out, (void)skip_out; /* no secondary rays in this build */
+#endif
     fx_t wl = fx_sub(fx_sub(FX_ONE, m->reflect), m->transparency);
     if (wl < 0)
         wl = 0;

@@ -29,6 +29,19 @@ HOST_ALL_OBJ := $(HOST_CORE_OBJ) $(HOST_PORT_OBJ) $(HOST_MAIN_OBJ)
 
 FIXTRACE := $(HOST_BUILD)/fixtrace
 
+# The flags a build directory was made with: objects depend on this file,
+# which changes only when the flags do, so reusing a directory with other
+# flags (SANITIZE=1, RT_DEFS=...) rebuilds instead of linking stale objects.
+HOST_STAMP := $(HOST_BUILD)/cflags.txt
+$(HOST_STAMP): host-force | $(HOST_BUILD)/core
+	$(Q)echo '$(CC) $(HOST_CFLAGS) $(HOST_LDFLAGS)' >$@.tmp; \
+	if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv -f $@.tmp $@; fi
+
+.PHONY: host-force
+host-force:
+
+$(HOST_ALL_OBJ): $(HOST_STAMP)
+
 $(HOST_BUILD)/core/%.o: core/%.c | $(HOST_BUILD)/core
 	@$(if $(Q),echo "  CC      $<")
 	$(Q)$(CC) $(HOST_CFLAGS) $(CORE_WARN) -Icore -MMD -MP -c $< -o $@

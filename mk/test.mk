@@ -6,7 +6,7 @@ TEST_SRC := $(sort $(wildcard tests/test_*.c))
 TEST_BIN := $(TEST_SRC:tests/%.c=$(HOST_BUILD)/tests/%)
 TEST_HARNESS_OBJ := $(HOST_BUILD)/tests/harness.o
 
-$(HOST_BUILD)/tests/%.o: tests/%.c | $(HOST_BUILD)/tests
+$(HOST_BUILD)/tests/%.o: tests/%.c $(HOST_STAMP) | $(HOST_BUILD)/tests
 	@$(if $(Q),echo "  CC      $<")
 	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) -Wno-missing-prototypes -Icore \
 	    -Iport/posix -Itests -MMD -MP -c $< -o $@

@@ -34,6 +34,24 @@ done
 undef=$(undefined "" "$tmp/x86" 'memcpy|memset|memmove')
 [ -z "$undef" ] && ok || bad "core references symbols beyond memcpy/memset/memmove: $(echo $undef)"
 
+# 2b. Every combination of the effect-removal flags builds warning-free
+# (make firmware derives them from a scene, so any combination happens).
+combo_fail=""
+for m in $(seq 0 63); do
+    flags="" i=0
+    for fl in SHADOWS REFLECTION REFRACTION TEXTURES BUMP SPECULAR; do
+        [ $(( (m >> i) & 1 )) = 1 ] && flags="$flags -DRT_NO_$fl"
+        i=$((i + 1))
+    done
+    for f in core/rt_*.c; do
+        gcc -std=c99 -ffreestanding -nostdlib -mgeneral-regs-only \
+            -fsyntax-only -Wall -Wextra -Werror -Wshadow -Wconversion \
+            -Wno-sign-conversion -Wmissing-prototypes $flags -Icore "$f" \
+            2>/dev/null || combo_fail="$combo_fail [$flags] $f;"
+    done
+done
+[ -z "$combo_fail" ] && ok || bad "effect-flag combinations that do not build:$combo_fail"
+
 # 3. Cortex-M0: no soft-float helpers may appear (libgcc integer helpers such
 # as __aeabi_lmul / __aeabi_uldivmod are fine).
 if command -v arm-none-eabi-gcc >/dev/null; then
