@@ -22,12 +22,24 @@ typedef struct {
 } rt_ray;
 
 /* |d|^2 - 1 of a unit direction, in Q32.32 (rounding leaves |d| a little
- * off 1; the bounding-sphere test corrects for it). */
-int32_t rt_unit_err(fx_vec3 d);
+ * off 1; the bounding-sphere test corrects for it). Each component is
+ * within an ulp, so |e| is far below 2^18. The closest approach is
+ * (oc.d) / |d|^2, not oc.d: without the factor its error is e |oc| (half a
+ * unit for a sphere 30000 units away); with t (1 - e) it is e^2 |oc|. */
+static inline int32_t rt_unit_err(fx_vec3 d)
+{
+    return (int32_t)((int64_t)d.x * d.x + (int64_t)d.y * d.y +
+                     (int64_t)d.z * d.z - ((int64_t)1 << 32));
+}
 
 /* 1 if every component of v is below 2^29 (8192 units) in magnitude:
  * differences of two such points fit 32 bits. */
-int rt_small3(fx_vec3 v);
+static inline int rt_small3(fx_vec3 v)
+{
+    const uint32_t lim = (uint32_t)1 << 30;
+    return (uint32_t)v.x + (lim >> 1) < lim &&
+           (uint32_t)v.y + (lim >> 1) < lim && (uint32_t)v.z + (lim >> 1) < lim;
+}
 
 /* floor(n / d) for d > 0 and n < d * 2^32 (the quotient fits 32 bits). */
 uint32_t rt_udiv64_32(uint64_t n, uint32_t d);

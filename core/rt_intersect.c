@@ -36,22 +36,7 @@
  * (Q16.16, may exceed the fx_t range), *disc = r^2 - |h|^2 (Q32.32, the
  * squared half chord) and h = c - (o + tca d). Cheap rejections come first:
  * most tests end at the first comparison. */
-int rt_small3(fx_vec3 v)
-{
-    const uint32_t lim = (uint32_t)1 << 30;
-    return (uint32_t)v.x + (lim >> 1) < lim &&
-           (uint32_t)v.y + (lim >> 1) < lim && (uint32_t)v.z + (lim >> 1) < lim;
-}
 
-int32_t rt_unit_err(fx_vec3 d)
-{
-    /* |d|^2 - 1 as Q32.32: each component is within an ulp, so |e| is far
-     * below 2^18. The closest approach is (oc.d) / |d|^2, not oc.d:
-     * without the factor its error is e |oc| (half a unit for a sphere
-     * 30000 units away, however near its surface); with the first-order
-     * t (1 - e) it is e^2 |oc|. */
-    return (int32_t)((int64_t)fx_v3_len2_q32(d) - ((int64_t)1 << 32));
-}
 
 /* small: the object's centre and radius are rt_small3 (rt_object.small). */
 static int bsphere(const fx_vec3 *cp, fx_t r, int small, const rt_ray *ray,

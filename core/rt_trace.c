@@ -45,13 +45,6 @@ static rt_rgb rgb_mul(rt_rgb a, rt_rgb b)
     return rgb(cmul(a.r, b.r), cmul(a.g, b.g), cmul(a.b, b.b));
 }
 
-void rt_ray_set(rt_ray *r, fx_vec3 o, fx_vec3 d)
-{
-    r->o = o;
-    r->d = d;
-    r->e = rt_unit_err(d);
-    r->small = (uint8_t)rt_small3(o);
-}
 
 /* Nearest hit among all objects but `skip`. */
 static int nearest(const rt_tracer *tr, const rt_ray *r, unsigned skip,

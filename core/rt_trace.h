@@ -28,8 +28,14 @@ void rt_tracer_prepare(rt_tracer *tr);
 #define RT_COUNT(tr, field) ((void)0)
 #endif
 
-/* Sets a ray's origin and unit direction. */
-void rt_ray_set(rt_ray *r, fx_vec3 o, fx_vec3 d);
+/* Sets a ray's origin and unit direction, and what its tests need. */
+static inline void rt_ray_set(rt_ray *r, fx_vec3 o, fx_vec3 d)
+{
+    r->o = o;
+    r->d = d;
+    r->e = rt_unit_err(d);
+    r->small = (uint8_t)rt_small3(o);
+}
 
 /* Colour seen along r (unclamped). depth counts bounces so far; skip is an
  * object index the ray must ignore (0xFFFF for none). Recursion depth is at
