@@ -19,3 +19,13 @@ int th_summary(void)
     fflush(stdout);
     return th_failed ? 1 : 0;
 }
+
+uint64_t th_rnd64(uint64_t *state)
+{
+    uint64_t x = *state;
+    x ^= x >> 12;
+    x ^= x << 25;
+    x ^= x >> 27;
+    *state = x;
+    return x * 0x2545F4914F6CDD1DULL;
+}

@@ -6,6 +6,7 @@
 #ifndef TEST_HARNESS_H
 #define TEST_HARNESS_H
 
+#include <stdint.h>
 #include <stdio.h>
 
 extern long th_passed, th_failed;
@@ -16,6 +17,10 @@ int th_check(int cond, const char *file, int line, const char *expr);
 /* Prints the summary line; returns the process exit status (0 if none
  * failed). */
 int th_summary(void);
+
+/* xorshift64*: deterministic test inputs from a caller-held state, so a
+ * fixed seed checks the same inputs on every run. */
+uint64_t th_rnd64(uint64_t *state);
 
 #define CHECK(cond) th_check(!!(cond), __FILE__, __LINE__, #cond)
 

@@ -24,13 +24,9 @@ typedef unsigned __int128 u128;
 
 static uint64_t rng_state = 0x9E3779B97F4A7C15ULL;
 
-/* xorshift64*: fixed seed, so every run checks the same inputs. */
 static uint64_t rnd64(void)
 {
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    return rng_state * 0x2545F4914F6CDD1DULL;
+    return th_rnd64(&rng_state);
 }
 
 static uint32_t rnd32(void)

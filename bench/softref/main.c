@@ -35,29 +35,6 @@ static int send_row(void *ctx, int y, const uint8_t *row, size_t nbytes)
     return 0;
 }
 
-/* "P6\n<w> <h>\n255\n". */
-static void send_header(unsigned w, unsigned h)
-{
-    char buf[32];
-    char *p = buf + sizeof buf;
-    const char *tail = "\n255\n";
-    p -= 5;
-    for (unsigned n = 0; n < 5; n++)
-        p[n] = tail[n];
-    do {
-        *--p = (char)('0' + h % 10);
-        h /= 10;
-    } while (h != 0);
-    *--p = ' ';
-    do {
-        *--p = (char)('0' + w % 10);
-        w /= 10;
-    } while (w != 0);
-    *--p = '\n';
-    *--p = '6';
-    *--p = 'P';
-    port_write(p, (size_t)(buf + sizeof buf - p));
-}
 
 /* The work, kept out of main() so that on the M4F no floating-point
  * instruction (not even a register save) runs before the FPU is on. */
@@ -88,7 +65,7 @@ __attribute__((noinline)) static int softref_main(void)
         port_log("softref: image too wide\n");
         return PORT_EXIT_OPTIONS;
     }
-    send_header(opt.width, opt.height);
+    port_write_ppm_header(opt.width, opt.height);
     uint64_t t0 = port_cycles();
     st = ref_render_rows(&scene, &opt, 0, opt.height, row_buf, send_row, 0,
                          0);

@@ -74,3 +74,28 @@ void port_log_value(const char *name, uint64_t v)
     port_log_u64(v);
     port_log("\n");
 }
+
+/* "P6\n<w> <h>\n255\n", as the host writes it. */
+void port_write_ppm_header(unsigned w, unsigned h)
+{
+    char buf[32];
+    char *p = buf + sizeof buf;
+    const char *tail = "\n255\n";
+    unsigned n;
+    p -= 5;
+    for (n = 0; n < 5; n++)
+        p[n] = tail[n];
+    do {
+        *--p = (char)('0' + h % 10);
+        h /= 10;
+    } while (h != 0);
+    *--p = ' ';
+    do {
+        *--p = (char)('0' + w % 10);
+        w /= 10;
+    } while (w != 0);
+    *--p = '\n';
+    *--p = '6';
+    *--p = 'P';
+    port_write(p, (size_t)(buf + sizeof buf - p));
+}

@@ -107,30 +107,6 @@ static void log_missing(uint32_t missing)
     port_log(" (build it for this scene, or with PRUNE=0)\n");
 }
 
-/* "P6\n<w> <h>\n255\n", as the host writes it. */
-static void send_header(unsigned w, unsigned h)
-{
-    char buf[32];
-    char *p = buf + sizeof buf;
-    const char *tail = "\n255\n";
-    unsigned n;
-    p -= 5;
-    for (n = 0; n < 5; n++)
-        p[n] = tail[n];
-    do {
-        *--p = (char)('0' + h % 10);
-        h /= 10;
-    } while (h != 0);
-    *--p = ' ';
-    do {
-        *--p = (char)('0' + w % 10);
-        w /= 10;
-    } while (w != 0);
-    *--p = '\n';
-    *--p = '6';
-    *--p = 'P';
-    port_write(p, (size_t)(buf + sizeof buf - p));
-}
 
 /* The scene to render, or NULL (after saying why) when the text does not
  * parse. */
@@ -194,7 +170,7 @@ int main(void)
         return PORT_EXIT_RENDER;
     }
 
-    send_header(opt.width, opt.height);
+    port_write_ppm_header(opt.width, opt.height);
     uint64_t t0 = port_cycles();
     st = rt_render_rows(s, &opt, 0, opt.height, row_buf, send_row, 0,
                         0);

@@ -65,6 +65,10 @@ void port_log_u64(uint64_t v);
 /* Logs one figure as a line "name value\n" on the text channel (common.c). */
 void port_log_value(const char *name, uint64_t v);
 
+/* Writes a binary PPM header "P6\n<w> <h>\n255\n", as the host writes
+ * it, through port_write (common.c). */
+void port_write_ppm_header(unsigned w, unsigned h);
+
 /* Fills the unused stack below the current stack pointer with a pattern
  * (common.c). The startup code calls it before main(). */
 void port_stack_paint(void);
