@@ -389,22 +389,20 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
             root[0] = root[1];
         n = 1;
     }
-    {
-        for (int i = 0; i < n; i++) {
-            fx_t y = fx_add(py, fx_mul(root[i], dy));
-            /* The side reaches RT_RIM_SLACK frame ulps past each cap's
-             * plane, as the caps reach past the side's radius below: the
-             * two are rounded separately, and no ray may pass between. A
-             * cone's apex meets no cap, so it gets no slack: past it lies
-             * the mirrored nappe. */
-            if (y < -uh - RT_RIM_SLACK ||
-                (y > uh + (cone ? 0 : RT_RIM_SLACK) && !steep))
-                continue;
-            if (take(from_frame(tca, root[i], k), tmin, &best)) {
-                *part = 0;
-                found = 1;
-                break;
-            }
+    for (int i = 0; i < n; i++) {
+        fx_t y = fx_add(py, fx_mul(root[i], dy));
+        /* The side reaches RT_RIM_SLACK frame ulps past each cap's
+         * plane, as the caps reach past the side's radius below: the
+         * two are rounded separately, and no ray may pass between. A
+         * cone's apex meets no cap, so it gets no slack: past it lies
+         * the mirrored nappe. */
+        if (y < -uh - RT_RIM_SLACK ||
+            (y > uh + (cone ? 0 : RT_RIM_SLACK) && !steep))
+            continue;
+        if (take(from_frame(tca, root[i], k), tmin, &best)) {
+            *part = 0;
+            found = 1;
+            break;
         }
     }
     /* Caps: discs at y = -uh (bottom) and y = +uh (top, cylinder only). */
