@@ -174,7 +174,8 @@ firmware: $(FW_ELF)
 fw-check-board:
 	@$(if $(FW_LD),true,echo "Unknown BOARD=$(BOARD); use an385, m0, \
 	    microbit, an505 or rv32" >&2; exit 1)
-	@command -v $(FW_CC) >/dev/null || { echo "$(FW_CC) not found" >&2; \
+	@command -v $(FW_CC) >/dev/null || { echo "$(FW_CC) not found; install" \
+	    "it with: apt-get install --no-install-recommends $(FW_CC_PKG)" >&2; \
 	    exit 1; }
 
 $(FW_CONFIG): fw-force | fw-check-board
@@ -311,7 +312,15 @@ $(FW_ELF): $(FW_OBJ) $(FW_LD) $(FW_FLAGS_STAMP)
 
 # The image goes to out.ppm (semihosting stdout), the figures to stderr
 # (semihosting stderr) and to qemu.log. The exit status is the firmware's.
+# The Debian packages of the board's compiler and QEMU, for messages.
+FW_CC_PKG = $(if $(filter rv32,$(BOARD)),gcc-riscv64-unknown-elf,gcc-arm-none-eabi)
+FW_QEMU_PKG = $(if $(filter rv32,$(BOARD)),qemu-system-misc,qemu-system-arm)
+
 qemu: $(FW_ELF)
+	$(Q)command -v $(firstword $(FW_QEMU)) >/dev/null || { \
+	    echo "$(firstword $(FW_QEMU)) not found; install it with:" \
+	    "apt-get install --no-install-recommends $(FW_QEMU_PKG)" >&2; \
+	    exit 1; }
 	$(Q)rc=0; timeout $(QEMU_TIMEOUT) $(FW_QEMU) \
 	    -icount shift=$(FW_ICOUNT),align=off,sleep=off -kernel $< \
 	    </dev/null >$(FW_BUILD)/out.ppm 2>$(FW_BUILD)/qemu.log || rc=$$?; \
