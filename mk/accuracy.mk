@@ -6,7 +6,7 @@
 #   make softref SR=v [SCENE=... WIDTH=... HEIGHT=... SPP=...]
 #   make softref-qemu SR=v [same]
 #                        the double reference renderer (port/posix/
-#                        ref_render.c, unchanged) as bare-metal firmware,
+#                        ref_render.c and ref_shapes.c, unchanged) as firmware,
 #                        built under build/softref-<v>/, run under QEMU to
 #                        build/softref-<v>/out.ppm with "instructions N" and
 #                        "pixels N" on stderr
@@ -70,7 +70,8 @@ SR_LDFLAGS := $(SR_CPU) -nostdlib -T linker/an385.ld -Wl,--gc-sections \
 SR_PORT_SRC := port/baremetal/common.c port/baremetal/semihost.c \
     port/baremetal/libc.c port/baremetal/board_an385.c \
     port/baremetal/startup_cortexm.c
-SR_FP_SRC := bench/softref/main.c bench/softref/libm.c port/posix/ref_render.c
+SR_FP_SRC := bench/softref/main.c bench/softref/libm.c port/posix/ref_render.c \
+    port/posix/ref_shapes.c
 SR_OBJ := $(CORE_SRC:%.c=$(SR_BUILD)/%.o) $(SR_PORT_SRC:%.c=$(SR_BUILD)/%.o) \
     $(SR_FP_SRC:%.c=$(SR_BUILD)/%.o) $(SR_BUILD)/scene.o
 SR_ELF := $(SR_BUILD)/softref.elf

@@ -204,7 +204,7 @@ size, spp and depth (\`fixtrace --reference\`); "∞" means identical bytes.
 M3 is \`BOARD=an385\`, M0 \`BOARD=m0\` (the firmware as \`make qemu\` builds
 it by default, with only the effects the scene needs), M4F QEMU's
 mps2-an386 with the FPU on. Host time is \`fixtrace --stats\`'s
-render_seconds (no parsing or file output) per pixel, one thread. The reference rows are port/posix/ref_render.c, unchanged, built as
+render_seconds (no parsing or file output) per pixel, one thread. The reference rows are port/posix/ref_render.c and ref_shapes.c, unchanged, built as
 firmware (bench/softref: a small libm, soft double or, with
 \`-Ddouble=float\`, soft float on the M3 and M0, hardware float on the
 M4F); their host time is \`--reference\` on the host's FPU.

@@ -71,7 +71,7 @@ if [ $QUICK = 0 ]; then
     echo
     echo "## What a user would pick instead (seed, ${W}x${H}, 1 spp)"
     echo
-    echo "The double reference renderer (port/posix/ref_render.c, unchanged)"
+    echo "The double reference renderer (port/posix/ref_render.c and ref_shapes.c, unchanged)"
     echo "built as firmware: soft float on the M3, and float32 on the M4F's FPU."
     echo
     echo "| build | instr/pixel | fixed-point M3 / this |"
