@@ -18,7 +18,8 @@
 #   parse fails the build with the parser's file:line:col message;
 # - `fixtrace --emit-c` writes the parsed scene as constant tables,
 #   build/<b>/scene_tables.c, which the image carries instead of the text:
-#   no parser (core/rt_parse.c) and no scene text are linked;
+#   no parser (core/rt_parse*.c, core/rt_lex*.c) and no scene text are
+#   linked;
 # - `fixtrace --build-flags` derives the RT_NO_* flags that remove every
 #   effect the scene does not need at the SPP the firmware renders;
 # - RT_MAX_OBJECTS, RT_MAX_MATERIALS and RT_MAX_LIGHTS are the scene's
@@ -147,11 +148,14 @@ FW_LDFLAGS := $(FW_CPU) -nostdlib -T $(FW_LD) -Wl,--gc-sections \
 FW_PORT_SRC := port/baremetal/common.c port/baremetal/semihost.c \
     port/baremetal/libc.c $(FW_BOARD_SRC)
 FW_TABLES_C := $(FW_BUILD)/scene_tables.c
+# The scene parser's files, which a pruned build leaves out.
+FW_PARSER_SRC := core/rt_parse.c core/rt_parse_obj.c core/rt_lex.c \
+    core/rt_lex_field.c
 ifeq ($(FW_APP),bringup)
 FW_SRC := $(FW_PORT_SRC) port/baremetal/bringup.c
 FW_SCENE_OBJ :=
 else ifeq ($(FW_PRUNING),1)
-FW_SRC := $(filter-out core/rt_parse.c,$(CORE_SRC)) $(FW_PORT_SRC) \
+FW_SRC := $(filter-out $(FW_PARSER_SRC),$(CORE_SRC)) $(FW_PORT_SRC) \
     port/baremetal/main.c
 FW_SCENE_OBJ := $(FW_BUILD)/scene_tables.o
 else
