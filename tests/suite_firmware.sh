@@ -110,9 +110,9 @@ check_elf() {
         echo "$syms" | grep -qx rt_parse && res ok ||
             res "FAILED: $b $name: PRUNE=0 firmware without rt_parse" ;;
     *)
-        if echo "$syms" | grep -qE '^rt_parse|^fw_scene_text$'; then
+        if echo "$syms" | grep -qE '^rt_(parse|lex)|^fw_scene_text$'; then
             res "FAILED: $b $name: the tables firmware links the parser" \
-                "or the text: $(echo "$syms" | grep -E '^rt_parse|^fw_scene_text$')"
+                "or the text: $(echo "$syms" | grep -E '^rt_(parse|lex)|^fw_scene_text$')"
         else
             echo "$syms" | grep -qx fw_scene && res ok ||
                 res "FAILED: $b $name: no fw_scene tables in the image"

@@ -129,9 +129,9 @@ want_caps() {
 
 # syms NAME: the symbols of the firmware in $B/NAME.
 syms() { arm-none-eabi-nm "$B/$1/fixtrace.elf" | awk '{ print $NF }'; }
-if syms pruned | grep -qE '^rt_parse|^fw_scene_text$'; then
+if syms pruned | grep -qE '^rt_(parse|lex)|^fw_scene_text$'; then
     bad "the pruned firmware links the parser or the scene text:" \
-        "$(syms pruned | grep -E '^rt_parse|^fw_scene_text$' | tr '\n' ' ')"
+        "$(syms pruned | grep -E '^rt_(parse|lex)|^fw_scene_text$' | tr '\n' ' ')"
 elif syms pruned | grep -qx fw_scene; then
     ok
 else
