@@ -241,3 +241,17 @@ int rt_lex_find(const rt_lex *p, const rt_lex_token *tk,
             return i;
     return -1;
 }
+
+rt_status rt_lex_too_many(rt_lex *p, const rt_lex_token *kw,
+                          const char *what, const char *limit_name,
+                          uint32_t limit)
+{
+    rt_lex_fail(p, kw, RT_ERR_CAPACITY, "too many ");
+    rt_lex_say(p, what);
+    rt_lex_say(p, " (");
+    rt_lex_say(p, limit_name);
+    rt_lex_say(p, " is ");
+    rt_lex_say_u32(p, limit);
+    rt_lex_say(p, ")");
+    return RT_ERR_CAPACITY;
+}

@@ -84,6 +84,12 @@ rt_status rt_lex_fail(rt_lex *p, const rt_lex_token *at, rt_status st,
                       const char *msg);
 void rt_lex_say(rt_lex *p, const char *s);
 void rt_lex_say_u32(rt_lex *p, uint32_t v);
+
+/* Fails at kw with "too many <what> (<limit_name> is <limit>)", the
+ * capacity error; returns RT_ERR_CAPACITY. */
+rt_status rt_lex_too_many(rt_lex *p, const rt_lex_token *kw,
+                          const char *what, const char *limit_name,
+                          uint32_t limit);
 /* The token in quotes, shortened to 24 bytes. */
 void rt_lex_say_tok(rt_lex *p, const rt_lex_token *tk);
 /* "; got" and the token, or "end of line" for the end marker. */

@@ -132,11 +132,8 @@ static rt_status st_light(rt_lex *p, const rt_lex_token *kw, rt_scene *s)
     int k;
     rt_light *l;
     if (s->n_lights >= RT_MAX_LIGHTS) {
-        rt_lex_fail(p, kw, RT_ERR_CAPACITY,
-                    "too many lights (RT_MAX_LIGHTS is ");
-        rt_lex_say_u32(p, RT_MAX_LIGHTS);
-        rt_lex_say(p, ")");
-        return RT_ERR_CAPACITY;
+        return rt_lex_too_many(p, kw, "lights", "RT_MAX_LIGHTS",
+                               RT_MAX_LIGHTS);
     }
     l = &s->light[s->n_lights];
     l->color.r = l->color.g = l->color.b = FX_ONE;

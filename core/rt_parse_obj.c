@@ -127,11 +127,8 @@ rt_status rt_parse_material(rt_lex *p, const rt_lex_token *kw, rt_scene *s,
     int k;
     rt_material *m;
     if (s->n_materials >= RT_MAX_MATERIALS) {
-        rt_lex_fail(p, kw, RT_ERR_CAPACITY,
-                    "too many materials (RT_MAX_MATERIALS is ");
-        rt_lex_say_u32(p, RT_MAX_MATERIALS);
-        rt_lex_say(p, ")");
-        return RT_ERR_CAPACITY;
+        return rt_lex_too_many(p, kw, "materials", "RT_MAX_MATERIALS",
+                               RT_MAX_MATERIALS);
     }
     TRY(rt_lex_next(p, &name));
     const char *n = p->t + name.off;
@@ -297,11 +294,8 @@ rt_status rt_parse_object(rt_lex *p, const rt_lex_token *kw, int kind,
     int k, caps_given = 0;
     rt_object *o;
     if (s->n_objects >= RT_MAX_OBJECTS) {
-        rt_lex_fail(p, kw, RT_ERR_CAPACITY,
-                    "too many objects (RT_MAX_OBJECTS is ");
-        rt_lex_say_u32(p, RT_MAX_OBJECTS);
-        rt_lex_say(p, ")");
-        return RT_ERR_CAPACITY;
+        return rt_lex_too_many(p, kw, "objects", "RT_MAX_OBJECTS",
+                               RT_MAX_OBJECTS);
     }
     o = &s->obj[s->n_objects];
     memset(o, 0, sizeof *o);
