@@ -57,16 +57,38 @@ static inline fx_t fx_sat64(int64_t v)
     return v > FX_MAX ? FX_MAX : (v < FX_MIN ? FX_MIN : (fx_t)v);
 }
 
+/* GCC and Clang report 32-bit overflow from the flags (adds + bvs on a
+ * Cortex-M): far cheaper than saturating a 64-bit sum. Same results. */
+#if defined(__GNUC__)
+#define FX_HAVE_OVERFLOW_BUILTINS 1
+#else
+#define FX_HAVE_OVERFLOW_BUILTINS 0
+#endif
+
 /* Adds; exact, saturates on overflow. */
 static inline fx_t fx_add(fx_t a, fx_t b)
 {
+#if FX_HAVE_OVERFLOW_BUILTINS
+    fx_t r;
+    if (__builtin_add_overflow(a, b, &r))
+        return (a >> 31) ^ FX_MAX; /* both had a's sign */
+    return r;
+#else
     return fx_sat64((int64_t)a + b);
+#endif
 }
 
 /* Subtracts; exact, saturates on overflow. */
 static inline fx_t fx_sub(fx_t a, fx_t b)
 {
+#if FX_HAVE_OVERFLOW_BUILTINS
+    fx_t r;
+    if (__builtin_sub_overflow(a, b, &r))
+        return (a >> 31) ^ FX_MAX; /* the result has a's sign */
+    return r;
+#else
     return fx_sat64((int64_t)a - b);
+#endif
 }
 
 /* Negates; exact, -FX_MIN saturates to FX_MAX. */
@@ -123,7 +145,13 @@ static inline fx_t fx_from_q32(int64_t q)
 #if RT_ACCURACY == 0
     return fx_sat64(q >> 16);
 #elif RT_ACCURACY == 1
-    return fx_sat64((q >> 16) + ((q >> 15) & 1));
+    /* q >> 16 fits in 32 bits exactly when the high word is in
+     * [-2^15, 2^15); then only FX_MAX plus the half bit can overflow. */
+    int32_t hi = (int32_t)(q >> 32);
+    if ((uint32_t)(hi + 0x8000) > 0xFFFFu)
+        return (hi >> 31) ^ FX_MAX;
+    fx_t r = (fx_t)(((uint32_t)hi << 16) | ((uint32_t)q >> 16));
+    return r == FX_MAX ? r : r + (fx_t)(((uint32_t)q >> 15) & 1);
 #else
     /* Up when the half bit is set and the value is not a tie (some lower
      * bit set) or the tie is to an odd neighbour (bit 16 set). */
@@ -144,6 +172,16 @@ static inline int fx_clz32(uint32_t x)
     if (x < 0x10000000u) { n += 4; x <<= 4; }
     if (x < 0x40000000u) { n += 2; x <<= 2; }
     return n + (x < 0x80000000u);
+#endif
+}
+
+/* Number of trailing zero bits of x (0..31); exact. x must not be 0. */
+static inline int fx_ctz32(uint32_t x)
+{
+#if defined(__GNUC__)
+    return __builtin_ctz(x);
+#else
+    return 31 - fx_clz32(x & (0u - x));
 #endif
 }
 

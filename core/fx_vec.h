@@ -53,14 +53,25 @@ static inline int64_t fx_mul_wide(fx_t a, fx_t b)
     return (p + fx_round_bias(p)) >> 16;
 }
 
-/* a + b * s per component: one rounding per component, as fx_mul (to
- * nearest, ties toward +infinity; precise: ties to even; fast: down);
- * saturates. */
+/* a + b * s with one rounding, as fx_mul (to nearest, ties toward
+ * +infinity; precise: ties to even; fast: down); saturates. */
+static inline fx_t fx_madd1(fx_t a, fx_t b, fx_t s)
+{
+    int64_t p = (int64_t)b * s;
+    p += fx_round_bias(p);
+    int32_t hi = (int32_t)(p >> 32);
+    /* The usual case: the rounded product fits in 32 bits, and a 32-bit
+     * add with an overflow check gives the saturated sum. */
+    if ((uint32_t)(hi + 0x8000) <= 0xFFFFu)
+        return fx_add(a, (fx_t)(((uint32_t)hi << 16) | ((uint32_t)p >> 16)));
+    return fx_sat64((int64_t)a + (p >> 16));
+}
+
+/* fx_madd1 per component. */
 static inline fx_vec3 fx_v3_madd(fx_vec3 a, fx_vec3 b, fx_t s)
 {
-    return fx_v3(fx_sat64((int64_t)a.x + fx_mul_wide(b.x, s)),
-                 fx_sat64((int64_t)a.y + fx_mul_wide(b.y, s)),
-                 fx_sat64((int64_t)a.z + fx_mul_wide(b.z, s)));
+    return fx_v3(fx_madd1(a.x, b.x, s), fx_madd1(a.y, b.y, s),
+                 fx_madd1(a.z, b.z, s));
 }
 
 /* Exact dot product as Q32.32, for operands where one side is bounded by
