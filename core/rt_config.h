@@ -72,6 +72,14 @@
 #define RT_CULL 1
 #endif
 
+/* Shadow rays test only the objects listed for their direction from the
+ * light on an N x N grid per hemisphere (rt_shadow.c; costs
+ * 2 N^2 (RT_MAX_OBJECTS / 32) words of stack per light). 0: every shadow
+ * ray tests every object. The image is the same either way. */
+#ifndef RT_SHADOW_GRID
+#define RT_SHADOW_GRID 8
+#endif
+
 /* ---- Effect removal (default off; see docs/effects.md) ------------------
  * Each flag removes the code for one effect. A scene that needs a removed
  * effect is refused (rt_render_rows returns RT_ERR_UNSUPPORTED), never

@@ -71,30 +71,53 @@ static int nearest(const rt_tracer *tr, const rt_ray *r, unsigned skip,
 }
 
 #if !defined(RT_NO_SHADOWS)
-/* Any blocker with RT_EPS < t < tmax: stops at the first. The light's last
- * blocker is tried first (neighbouring shadow rays tend to share it); the
- * answer does not depend on the order, only the count of tests does. */
-static int occluded(const rt_tracer *tr, const rt_ray *r, fx_t tmax,
-                    unsigned skip, unsigned light)
+/* Tests object i for a blocker of shadow ray r; remembers it. */
+static int blocks(const rt_tracer *tr, const rt_ray *r, fx_t tmax,
+                  unsigned i, unsigned light)
 {
-    const rt_scene *s = tr->scene;
     fx_t ti;
     uint8_t pi;
+    RT_COUNT(tr, tests);
+    if (!rt_intersect(&tr->scene->obj[i], r, RT_EPS, tmax, &ti, &pi))
+        return 0;
+    tr->blocker[light] = (uint16_t)i;
+    return 1;
+}
+
+/* Any blocker with RT_EPS < t < tmax among the candidates (a bit set of
+ * object indices; all objects without the shadow grid): stops at the
+ * first. The light's last blocker is tried first (neighbouring shadow rays
+ * tend to share it); the answer does not depend on the order, only the
+ * count of tests does. */
+static int occluded(const rt_tracer *tr, const rt_ray *r, fx_t tmax,
+                    unsigned skip, unsigned light, const uint32_t *cand)
+{
+    const rt_scene *s = tr->scene;
     unsigned first = tr->blocker[light];
-    if (first < s->n_objects && first != skip) {
-        RT_COUNT(tr, tests);
-        if (rt_intersect(&s->obj[first], r, RT_EPS, tmax, &ti, &pi))
-            return 1;
-    }
-    for (unsigned i = 0; i < s->n_objects; i++) {
-        if (i == skip || i == first)
-            continue;
-        RT_COUNT(tr, tests);
-        if (rt_intersect(&s->obj[i], r, RT_EPS, tmax, &ti, &pi)) {
-            tr->blocker[light] = (uint16_t)i;
-            return 1;
+#if RT_SHADOW_GRID > 0
+#define CANDIDATE(i) ((cand[(i) / 32] >> ((i) % 32)) & 1u)
+#else
+#define CANDIDATE(i) ((void)cand, 1)
+#endif
+    if (first < s->n_objects && first != skip && CANDIDATE(first) &&
+        blocks(tr, r, tmax, first, light))
+        return 1;
+#if RT_SHADOW_GRID > 0
+    for (unsigned w = 0; w < RT_SHADOW_WORDS; w++) {
+        uint32_t m = cand[w];
+        while (m) {
+            unsigned i = w * 32 + (unsigned)fx_ctz32(m);
+            m &= m - 1;
+            if (i != skip && i != first && blocks(tr, r, tmax, i, light))
+                return 1;
         }
     }
+#else
+    for (unsigned i = 0; i < s->n_objects; i++)
+        if (i != skip && i != first && blocks(tr, r, tmax, i, light))
+            return 1;
+#endif
+#undef CANDIDATE
     return 0;
 }
 #endif
@@ -191,15 +214,24 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
             continue;
 #if !defined(RT_NO_SHADOWS)
         if (tr->feat & RT_FEAT_SHADOWS) {
-            rt_ray sr;
-            rt_ray_set(&sr, p_out, ld);
+#if RT_SHADOW_GRID > 0
+            const uint32_t *cand = rt_shadow_cell(&tr->shadow[li], ld);
+#else
+            static const uint32_t every = 1; /* not read: all objects */
+            const uint32_t *cand = &every;
+#endif
             RT_COUNT(tr, shadow);
-            /* |lv| = lv . norm(lv): a bounded dot product instead of a
-             * second square root; its error (~1e-5 |lv|) only moves the
-             * far end of the shadow ray, by far less than RT_EPS. */
-            if (occluded(tr, &sr, fx_sub(fx_v3_dotn(lv, ld), RT_EPS),
-                         skip_out, li))
-                continue;
+            if (cand) {
+                rt_ray sr;
+                rt_ray_set(&sr, p_out, ld);
+                /* |lv| = lv . norm(lv): a bounded dot product instead of
+                 * a second square root; its error (~1e-5 |lv|) only moves
+                 * the far end of the shadow ray, by far less than
+                 * RT_EPS. */
+                if (occluded(tr, &sr, fx_sub(fx_v3_dotn(lv, ld), RT_EPS),
+                             skip_out, li, cand))
+                    continue;
+            }
         }
 #endif
         rt_rgb lc;
@@ -309,4 +341,8 @@ void rt_tracer_prepare(rt_tracer *tr)
         tr->kdl[i] = fx_mul(wl, m->diffuse);
         tr->lit[i] = s->n_lights ? rgb_mul(m->color, s->light[0].color) : c;
     }
+#if !defined(RT_NO_SHADOWS) && RT_SHADOW_GRID > 0
+    for (unsigned i = 0; i < s->n_lights && i < RT_MAX_LIGHTS; i++)
+        rt_shadow_prepare(&tr->shadow[i], s, s->light[i].pos);
+#endif
 }

@@ -3,6 +3,7 @@
 #define RT_TRACE_H
 
 #include "rt_cull.h"
+#include "rt_shadow.h"
 
 typedef struct {
     const rt_scene *scene;
@@ -13,9 +14,13 @@ typedef struct {
     rt_rgb amb[RT_MAX_MATERIALS]; /* untextured: ambient term */
     fx_t kdl[RT_MAX_MATERIALS];   /* wl * kd */
     rt_rgb lit[RT_MAX_MATERIALS]; /* untextured: colour x light 0 */
+#if !defined(RT_NO_SHADOWS) && RT_SHADOW_GRID > 0
+    rt_shadow_grid shadow[RT_MAX_LIGHTS]; /* per light: possible blockers */
+#endif
 } rt_tracer;
 
-/* Fills the per-material constants of tr (after tr->scene is set). */
+/* Fills the per-material and per-light constants of tr (after tr->scene
+ * is set). */
 void rt_tracer_prepare(rt_tracer *tr);
 
 #if RT_STATS

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Camera-ray culling (core/rt_cull.c) must never change a pixel: random
-# scenes with tiny, huge, near and far objects and random cameras render
-# the same bytes with RT_CULL=1 (the normal build) and RT_CULL=0.
+# Culling of camera rays (core/rt_cull.c) and of shadow rays (the light
+# grid, core/rt_shadow.c) must never change a pixel: random scenes with
+# tiny, huge, near and far objects, random cameras and one to three lights
+# anywhere (inside objects too) render the same bytes in the normal build
+# and with RT_CULL=0 RT_SHADOW_GRID=0.
 set -u
 cd "$(dirname "$0")/.."
 FT=${FIXTRACE:-build/posix/fixtrace}
@@ -10,8 +12,8 @@ NOCULL=build/nocull/fixtrace
 pass=0 fail=0
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-if ! $MAKE -s HOST_BUILD=build/nocull RT_DEFS=-DRT_CULL=0 "$NOCULL" >"$tmp/log" 2>&1; then
-    echo "FAILED: cannot build the RT_CULL=0 renderer: $(tail -5 "$tmp/log")"
+if ! $MAKE -s HOST_BUILD=build/nocull RT_DEFS="-DRT_CULL=0 -DRT_SHADOW_GRID=0" "$NOCULL" >"$tmp/log" 2>&1; then
+    echo "FAILED: cannot build the renderer without culling: $(tail -5 "$tmp/log")"
     echo "0 passed, 1 failed"
     exit 1
 fi
@@ -22,7 +24,10 @@ for seed in $(seq 1 150); do
         printf "camera eye %.3f %.3f %.3f look %.3f %.3f %.3f fov %.2f\n",
                ex, ey, ez, rand() * 4 - 2, rand() * 4, rand() * 10,
                1 + rand() * 170;
-        print "light 10 40 -5";
+        nl = 1 + int(rand() * 3);
+        for (i = 0; i < nl; i++)
+            printf "light %.3f %.3f %.3f color 0.5 0.5 0.5\n", rand() * 60 - 30,
+                   rand() * 50 - 5, rand() * 200 - 40;
         print "material m color 0.8 0.5 0.3 reflect 0.3";
         print "material g color 1 1 1 transparency 0.8 ior 1.3";
         print "quad corner -30 0 -30 edge1 0 0 60 edge2 60 0 0 material m";

@@ -1,0 +1,177 @@
+/*
+ * rt_shadow: conservative culling of shadow rays by direction from the
+ * light (a light buffer, after Haines and Greenberg).
+ *
+ * A shadow ray from hit point p runs along u = norm(p - L) seen from the
+ * light L. It can only meet an object whose bounding sphere (c, R) it
+ * passes within, so u lies in the cone from L around a = norm(c - L) with
+ * sin(theta) = R / |c - L|, and then |u - a| <= 2 sin(theta / 2) (the
+ * chord). So |u.x - a.x| and |u.z - a.z| are at most that chord, and u.y
+ * has a's sign unless the chord reaches y = 0: a square per cone, which is
+ * marked on a grid over (u.x, u.z), one grid per hemisphere of u.y.
+ *
+ * R is widened by every way the ray in the test differs from the segment
+ * p..L: it starts off the surface (rt_trace's offset, at most off_max),
+ * its direction is rounded (well under 2^-14 of its length, at most the
+ * largest distance from L to any object), and the bounding-sphere test
+ * rounds; the chord gets 2^-12 more for the rounding of a and u. So a
+ * cell leaves out only objects the intersection test would miss: images
+ * are bit-identical with and without the grid (RT_SHADOW_GRID=0 in the
+ * tests). Any case too large to bound in Q16.16 marks every cell.
+ */
+#include "rt_shadow.h"
+
+#if !defined(RT_NO_SHADOWS) && RT_SHADOW_GRID > 0
+
+#include "rt_libc.h"
+
+#define N RT_SHADOW_GRID
+
+/* Components of c - L beyond this (and radii beyond it) are not culled. */
+#define FAR_LIMIT FX_INT(8192)
+
+/* Narrowest gridded range of u.x or u.z: keeps the cell scale in range. */
+#define MIN_SPAN ((fx_t)1 << 8)
+
+typedef struct {
+    int all;        /* 1: every cell (the light is inside, or too far) */
+    fx_t lo_x, hi_x, lo_z, hi_z;
+    int lower, upper; /* hemispheres of u.y it reaches */
+} cone_box;
+
+/* Largest offset rt_trace gives a shadow ray's origin (see shade()). */
+static fx_t origin_offset(const rt_object *o)
+{
+    if ((o->kind == RT_CYLINDER || o->kind == RT_CONE) && o->ushift > 4)
+        return (fx_t)1 << (o->ushift + 2);
+    return RT_EPS;
+}
+
+static fx_t clamp1(int64_t v)
+{
+    return v < -FX_ONE ? -FX_ONE : (v > FX_ONE ? FX_ONE : (fx_t)v);
+}
+
+static void cone_of(cone_box *b, const rt_object *o, fx_vec3 lp, fx_t slack)
+{
+    int64_t vx = (int64_t)o->bc.x - lp.x, vy = (int64_t)o->bc.y - lp.y;
+    int64_t vz = (int64_t)o->bc.z - lp.z;
+    int64_t r = (int64_t)o->br + slack;
+    b->all = 1;
+    if (r >= FAR_LIMIT || vx <= -FAR_LIMIT || vx >= FAR_LIMIT ||
+        vy <= -FAR_LIMIT || vy >= FAR_LIMIT || vz <= -FAR_LIMIT ||
+        vz >= FAR_LIMIT)
+        return;
+    fx_vec3 v = fx_v3((fx_t)vx, (fx_t)vy, (fx_t)vz);
+    fx_t d = fx_v3_length(v);
+    /* Light inside the sphere or nearly: every direction. */
+    if ((int64_t)d <= r + (r >> 4) + FX_ONE / 64)
+        return;
+    fx_vec3 a = fx_v3_normalize(v);
+    /* 2 sin(theta / 2) = sin(theta) / cos(theta / 2), and
+     * cos(theta / 2) = sqrt((1 + cos(theta)) / 2): no cancellation for
+     * small cones. Widened by 2^-8 of itself and 2^-12 for the rounding
+     * of a, u and these steps. */
+    fx_t sn = fx_div((fx_t)r, d);
+    fx_t cs = fx_sqrt(fx_sub(FX_ONE, fx_mul(sn, sn)));
+    fx_t chord = fx_div(sn, fx_sqrt((FX_ONE + cs) / 2));
+    chord = fx_add(chord, (chord >> 8) + ((fx_t)1 << 4));
+    b->all = 0;
+    b->lo_x = clamp1((int64_t)a.x - chord);
+    b->hi_x = clamp1((int64_t)a.x + chord);
+    b->lo_z = clamp1((int64_t)a.z - chord);
+    b->hi_z = clamp1((int64_t)a.z + chord);
+    b->lower = (int64_t)a.y - chord <= 0;
+    b->upper = (int64_t)a.y + chord >= 0;
+}
+
+/* The same map rt_shadow_cell uses, so marking is conservative. */
+static unsigned cell_of(fx_t v, fx_t v0, fx_t s)
+{
+    int64_t i = ((int64_t)(v - v0) * s) >> 32;
+    return i < 0 ? 0 : (i >= N ? N - 1 : (unsigned)i);
+}
+
+static fx_t cells_per_unit(fx_t lo, fx_t hi)
+{
+    return (fx_t)(((int64_t)N << 32) / ((int64_t)hi - lo));
+}
+
+void rt_shadow_prepare(rt_shadow_grid *g, const rt_scene *s, fx_vec3 lp)
+{
+    const unsigned n = s->n_objects;
+    memset(g->cell, 0, sizeof g->cell);
+    /* The farthest any hit point lies from the light, and the largest
+     * origin offset: they bound how far a shadow ray strays from p..L. */
+    int64_t far = 0;
+    fx_t off_max = RT_EPS;
+    for (unsigned i = 0; i < n; i++) {
+        const rt_object *o = &s->obj[i];
+        fx_t off = origin_offset(o);
+        if (off > off_max)
+            off_max = off;
+        int64_t d = (int64_t)fx_v3_length(fx_v3_sub(o->bc, lp)) + o->br;
+        if (d > far)
+            far = d;
+    }
+    int64_t sl = (int64_t)off_max + ((far + off_max) >> 12) + FX_ONE / 256;
+    fx_t slack = sl > FAR_LIMIT ? FAR_LIMIT : (fx_t)sl;
+
+    fx_t x0 = FX_ONE, x1 = -FX_ONE, z0 = FX_ONE, z1 = -FX_ONE;
+    int any = 0;
+    for (unsigned i = 0; i < n; i++) {
+        cone_box b;
+        cone_of(&b, &s->obj[i], lp, slack);
+        if (b.all) {
+            x0 = z0 = -FX_ONE;
+            x1 = z1 = FX_ONE;
+        } else {
+            x0 = b.lo_x < x0 ? b.lo_x : x0;
+            x1 = b.hi_x > x1 ? b.hi_x : x1;
+            z0 = b.lo_z < z0 ? b.lo_z : z0;
+            z1 = b.hi_z > z1 ? b.hi_z : z1;
+        }
+        any = 1;
+    }
+    if (!any) { /* nothing can block: an empty range */
+        g->x0 = g->z0 = FX_ONE;
+        g->x1 = g->z1 = -FX_ONE;
+        g->sx = g->sz = 0;
+        return;
+    }
+    if (x1 - x0 < MIN_SPAN)
+        x1 = x0 + MIN_SPAN;
+    if (z1 - z0 < MIN_SPAN)
+        z1 = z0 + MIN_SPAN;
+    g->x0 = x0;
+    g->x1 = x1;
+    g->z0 = z0;
+    g->z1 = z1;
+    g->sx = cells_per_unit(x0, x1);
+    g->sz = cells_per_unit(z0, z1);
+
+    for (unsigned i = 0; i < n; i++) {
+        cone_box b;
+        cone_of(&b, &s->obj[i], lp, slack);
+        unsigned ix0 = 0, ix1 = N - 1, iz0 = 0, iz1 = N - 1;
+        int lower = 1, upper = 1;
+        if (!b.all) {
+            ix0 = cell_of(b.lo_x, x0, g->sx);
+            ix1 = cell_of(b.hi_x, x0, g->sx);
+            iz0 = cell_of(b.lo_z, z0, g->sz);
+            iz1 = cell_of(b.hi_z, z0, g->sz);
+            lower = b.lower;
+            upper = b.upper;
+        }
+        const uint32_t bit = (uint32_t)1 << (i % 32);
+        for (unsigned iz = iz0; iz <= iz1; iz++)
+            for (unsigned ix = ix0; ix <= ix1; ix++) {
+                if (lower)
+                    g->cell[0][iz * N + ix][i / 32] |= bit;
+                if (upper)
+                    g->cell[1][iz * N + ix][i / 32] |= bit;
+            }
+    }
+}
+
+#endif
