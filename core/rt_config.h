@@ -72,12 +72,32 @@
 #define RT_CULL 1
 #endif
 
-/* Shadow rays test only the objects listed for their direction from the
- * light on an N x N grid per hemisphere (rt_shadow.c; costs
- * 2 N^2 (RT_MAX_OBJECTS / 32) words of stack per light). 0: every shadow
- * ray tests every object. The image is the same either way. */
-#ifndef RT_SHADOW_GRID
-#define RT_SHADOW_GRID 8
+/* Shadow rays, and rays leaving a reflective or transparent object, test
+ * only the objects listed for their direction on an N x N grid per
+ * hemisphere (rt_dirgrid.c). 0: every such ray tests every object. The
+ * image is the same either way. */
+#ifndef RT_DIR_GRID
+#define RT_DIR_GRID 8
+#endif
+
+/* Most direction grids of one render: lights first, then the reflective
+ * or transparent objects in scene order; the rest test every object. */
+#ifndef RT_DIR_MAX_GRIDS
+#define RT_DIR_MAX_GRIDS (RT_MAX_LIGHTS + 4)
+#endif
+
+/* Stack for the grids' bit sets, in 32-bit words: one grid takes
+ * 2 N^2 ceil(objects / 32) words (128 for N = 8 and up to 32 objects).
+ * Default: RT_DIR_MAX_GRIDS grids at full capacity, at most 4 KB. */
+#ifndef RT_DIR_POOL_WORDS
+#if RT_DIR_MAX_GRIDS * 2 * RT_DIR_GRID * RT_DIR_GRID * \
+        ((RT_MAX_OBJECTS + 31) / 32) > 1024
+#define RT_DIR_POOL_WORDS 1024
+#else
+#define RT_DIR_POOL_WORDS                                                     \
+    (RT_DIR_MAX_GRIDS * 2 * RT_DIR_GRID * RT_DIR_GRID *                       \
+     ((RT_MAX_OBJECTS + 31) / 32))
+#endif
 #endif
 
 /* ---- Effect removal (default off; see docs/effects.md) ------------------

@@ -3,6 +3,7 @@
  * Each row depends only on its own y, so any banding of rows gives the
  * same bytes.
  */
+#include "rt_libc.h"
 #include "rt_trace.h"
 
 void rt_options_from_scene(rt_options *o, const rt_scene *s)
@@ -372,6 +373,7 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
         return RT_ERR_ARG;
 
     rt_tracer tr;
+    memset(&tr, 0, sizeof tr); /* every field defined, grids included */
     uint16_t blocker[RT_MAX_LIGHTS];
     for (unsigned i = 0; i < RT_MAX_LIGHTS; i++)
         blocker[i] = 0xFFFFu;

@@ -46,28 +46,52 @@ static rt_rgb rgb_mul(rt_rgb a, rt_rgb b)
 }
 
 
-/* Nearest hit among all objects but `skip`. */
+/* Tests object i for a nearer hit than *best. */
+static void try_nearest(const rt_tracer *tr, const rt_ray *r, unsigned i,
+                        fx_t *best, uint16_t *obj, uint8_t *part)
+{
+    fx_t ti;
+    uint8_t pi;
+    RT_COUNT(tr, tests);
+    if (rt_intersect(&tr->scene->obj[i], r, RT_EPS, *best, &ti, &pi)) {
+        *best = ti;
+        *obj = (uint16_t)i;
+        *part = pi;
+    }
+}
+
+/* Nearest hit among all objects but `skip`, of a ray leaving object
+ * `from` (NO_SKIP: unknown). Objects go in index order either way, so
+ * exact ties resolve alike. */
 static int nearest(const rt_tracer *tr, const rt_ray *r, unsigned skip,
-                   fx_t *t, uint16_t *obj, uint8_t *part)
+                   unsigned from, fx_t *t, uint16_t *obj, uint8_t *part)
 {
     const rt_scene *s = tr->scene;
     fx_t best = FX_MAX;
-    int found = 0;
-    for (unsigned i = 0; i < s->n_objects; i++) {
-        fx_t ti;
-        uint8_t pi;
-        if (i == skip)
-            continue;
-        RT_COUNT(tr, tests);
-        if (rt_intersect(&s->obj[i], r, RT_EPS, best, &ti, &pi)) {
-            best = ti;
-            *obj = (uint16_t)i;
-            *part = pi;
-            found = 1;
+#if RT_DIR_GRIDS
+    const rt_dir_grids *gs = &tr->grids;
+    if (from < s->n_objects && gs->from[from] != RT_DIR_NONE) {
+        const uint32_t *cand = rt_dir_cell(&gs->grid[gs->from[from]],
+                                           r->d.x, r->d.y, r->d.z,
+                                           gs->words);
+        for (unsigned w = 0; cand && w < gs->words; w++) {
+            for (uint32_t m = cand[w]; m; m &= m - 1) {
+                unsigned i = w * 32 + (unsigned)fx_ctz32(m);
+                if (i != skip)
+                    try_nearest(tr, r, i, &best, obj, part);
+            }
         }
+        *t = best;
+        return best != FX_MAX;
     }
+#else
+    (void)from;
+#endif
+    for (unsigned i = 0; i < s->n_objects; i++)
+        if (i != skip)
+            try_nearest(tr, r, i, &best, obj, part);
     *t = best;
-    return found;
+    return best != FX_MAX;
 }
 
 #if !defined(RT_NO_SHADOWS)
@@ -85,39 +109,34 @@ static int blocks(const rt_tracer *tr, const rt_ray *r, fx_t tmax,
 }
 
 /* Any blocker with RT_EPS < t < tmax among the candidates (a bit set of
- * object indices; all objects without the shadow grid): stops at the
- * first. The light's last blocker is tried first (neighbouring shadow rays
- * tend to share it); the answer does not depend on the order, only the
- * count of tests does. */
+ * object indices, or NULL for all objects): stops at the first. The
+ * light's last blocker is tried first (neighbouring shadow rays tend to
+ * share it); the answer does not depend on the order, only the count of
+ * tests does. */
 static int occluded(const rt_tracer *tr, const rt_ray *r, fx_t tmax,
                     unsigned skip, unsigned light, const uint32_t *cand)
 {
     const rt_scene *s = tr->scene;
     unsigned first = tr->blocker[light];
-#if RT_SHADOW_GRID > 0
-#define CANDIDATE(i) ((cand[(i) / 32] >> ((i) % 32)) & 1u)
-#else
-#define CANDIDATE(i) ((void)cand, 1)
-#endif
-    if (first < s->n_objects && first != skip && CANDIDATE(first) &&
+    if (first < s->n_objects && first != skip &&
+        (!cand || ((cand[first / 32] >> (first % 32)) & 1u)) &&
         blocks(tr, r, tmax, first, light))
         return 1;
-#if RT_SHADOW_GRID > 0
-    for (unsigned w = 0; w < RT_SHADOW_WORDS; w++) {
-        uint32_t m = cand[w];
-        while (m) {
-            unsigned i = w * 32 + (unsigned)fx_ctz32(m);
-            m &= m - 1;
-            if (i != skip && i != first && blocks(tr, r, tmax, i, light))
-                return 1;
-        }
+#if RT_DIR_GRIDS
+    if (cand) {
+        for (unsigned w = 0; w < tr->grids.words; w++)
+            for (uint32_t m = cand[w]; m; m &= m - 1) {
+                unsigned i = w * 32 + (unsigned)fx_ctz32(m);
+                if (i != skip && i != first &&
+                    blocks(tr, r, tmax, i, light))
+                    return 1;
+            }
+        return 0;
     }
-#else
+#endif
     for (unsigned i = 0; i < s->n_objects; i++)
         if (i != skip && i != first && blocks(tr, r, tmax, i, light))
             return 1;
-#endif
-#undef CANDIDATE
     return 0;
 }
 #endif
@@ -214,14 +233,19 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
             continue;
 #if !defined(RT_NO_SHADOWS)
         if (tr->feat & RT_FEAT_SHADOWS) {
-#if RT_SHADOW_GRID > 0
-            const uint32_t *cand = rt_shadow_cell(&tr->shadow[li], ld);
-#else
-            static const uint32_t every = 1; /* not read: all objects */
-            const uint32_t *cand = &every;
+            const uint32_t *cand = 0; /* every object */
+            int any = 1;
+#if RT_DIR_GRIDS
+            const rt_dir_grids *gs = &tr->grids;
+            if (gs->light[li] != RT_DIR_NONE) {
+                /* Seen from the light, the ray runs along -ld. */
+                cand = rt_dir_cell(&gs->grid[gs->light[li]], -ld.x, -ld.y,
+                                   -ld.z, gs->words);
+                any = cand != 0;
+            }
 #endif
             RT_COUNT(tr, shadow);
-            if (cand) {
+            if (any) {
                 rt_ray sr;
                 rt_ray_set(&sr, p_out, ld);
                 /* |lv| = lv . norm(lv): a bounded dot product instead of
@@ -258,7 +282,7 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
         rt_ray rr;
         rt_ray_set(&rr, p_out, reflect_dir(r->d, n));
         RT_COUNT(tr, reflection);
-        rgb_madd(&c, rt_trace(tr, &rr, depth + 1, skip_out), m->reflect);
+        rgb_madd(&c, rt_trace(tr, &rr, depth + 1, skip_out, oi), m->reflect);
     }
 #endif
 #if !defined(RT_NO_REFRACTION)
@@ -271,7 +295,7 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
         if (k < 0) { /* total internal reflection */
             rt_ray_set(&tr2, p_out, reflect_dir(r->d, n));
             RT_COUNT(tr, reflection);
-            rgb_madd(&c, rt_trace(tr, &tr2, depth + 1, skip_out),
+            rgb_madd(&c, rt_trace(tr, &tr2, depth + 1, skip_out, oi),
                      m->transparency);
         } else { /* Snell's law */
             fx_t f = fx_sub(fx_mul(eta, cosi), fx_sqrt(k));
@@ -282,7 +306,7 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
                                                                  : NO_SKIP;
             rt_ray_set(&tr2, fx_v3_madd(p, ng, -off), td);
             RT_COUNT(tr, refraction);
-            rgb_madd(&c, rt_trace(tr, &tr2, depth + 1, skip_in),
+            rgb_madd(&c, rt_trace(tr, &tr2, depth + 1, skip_in, oi),
                      m->transparency);
         }
     }
@@ -291,12 +315,12 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
 }
 
 rt_rgb rt_trace(const rt_tracer *tr, const rt_ray *r, unsigned depth,
-                unsigned skip)
+                unsigned skip, unsigned from)
 {
     fx_t t;
     uint16_t oi = 0;
     uint8_t part = 0;
-    if (!nearest(tr, r, skip, &t, &oi, &part))
+    if (!nearest(tr, r, skip, from, &t, &oi, &part))
         return tr->scene->background;
     return shade(tr, r, depth, oi, part, t);
 }
@@ -341,8 +365,7 @@ void rt_tracer_prepare(rt_tracer *tr)
         tr->kdl[i] = fx_mul(wl, m->diffuse);
         tr->lit[i] = s->n_lights ? rgb_mul(m->color, s->light[0].color) : c;
     }
-#if !defined(RT_NO_SHADOWS) && RT_SHADOW_GRID > 0
-    for (unsigned i = 0; i < s->n_lights && i < RT_MAX_LIGHTS; i++)
-        rt_shadow_prepare(&tr->shadow[i], s, s->light[i].pos);
+#if RT_DIR_GRIDS
+    rt_dir_grids_prepare(&tr->grids, s);
 #endif
 }

@@ -3,7 +3,7 @@
 #define RT_TRACE_H
 
 #include "rt_cull.h"
-#include "rt_shadow.h"
+#include "rt_dirgrid.h"
 
 typedef struct {
     const rt_scene *scene;
@@ -14,8 +14,8 @@ typedef struct {
     rt_rgb amb[RT_MAX_MATERIALS]; /* untextured: ambient term */
     fx_t kdl[RT_MAX_MATERIALS];   /* wl * kd */
     rt_rgb lit[RT_MAX_MATERIALS]; /* untextured: colour x light 0 */
-#if !defined(RT_NO_SHADOWS) && RT_SHADOW_GRID > 0
-    rt_shadow_grid shadow[RT_MAX_LIGHTS]; /* per light: possible blockers */
+#if RT_DIR_GRIDS
+    rt_dir_grids grids; /* what shadow and secondary rays may hit */
 #endif
 } rt_tracer;
 
@@ -43,10 +43,11 @@ static inline void rt_ray_set(rt_ray *r, fx_vec3 o, fx_vec3 d)
 }
 
 /* Colour seen along r (unclamped). depth counts bounces so far; skip is an
- * object index the ray must ignore (0xFFFF for none). Recursion depth is at
- * most tr->max_depth <= RT_MAX_DEPTH. */
+ * object index the ray must ignore (0xFFFF for none); from is the object
+ * the ray starts on (0xFFFF for none), whose direction grid may narrow the
+ * search. Recursion depth is at most tr->max_depth <= RT_MAX_DEPTH. */
 rt_rgb rt_trace(const rt_tracer *tr, const rt_ray *r, unsigned depth,
-                unsigned skip);
+                unsigned skip, unsigned from);
 
 /* Colour seen along camera ray r of pixel column x, testing only the
  * objects whose row span covers x (rt_cull_row). Same result as rt_trace

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# Culling of camera rays (core/rt_cull.c) and of shadow rays (the light
-# grid, core/rt_shadow.c) must never change a pixel: random scenes with
-# tiny, huge, near and far objects, random cameras and one to three lights
-# anywhere (inside objects too) render the same bytes in the normal build
-# and with RT_CULL=0 RT_SHADOW_GRID=0.
+# Culling of camera rays (core/rt_cull.c) and of shadow and secondary
+# rays (the direction grids, core/rt_dirgrid.c) must never change a pixel:
+# random scenes with tiny, huge, near and far objects, reflective and
+# glass materials, random cameras and one to three lights anywhere
+# (inside objects too) render the same bytes in the normal build
+# and with RT_CULL=0 RT_DIR_GRID=0.
 set -u
 cd "$(dirname "$0")/.."
 FT=${FIXTRACE:-build/posix/fixtrace}
@@ -12,7 +13,7 @@ NOCULL=build/nocull/fixtrace
 pass=0 fail=0
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-if ! $MAKE -s HOST_BUILD=build/nocull RT_DEFS="-DRT_CULL=0 -DRT_SHADOW_GRID=0" "$NOCULL" >"$tmp/log" 2>&1; then
+if ! $MAKE -s HOST_BUILD=build/nocull RT_DEFS="-DRT_CULL=0 -DRT_DIR_GRID=0" "$NOCULL" >"$tmp/log" 2>&1; then
     echo "FAILED: cannot build the renderer without culling: $(tail -5 "$tmp/log")"
     echo "0 passed, 1 failed"
     exit 1

@@ -1,31 +1,35 @@
 /*
- * rt_shadow: conservative culling of shadow rays by direction from the
- * light (a light buffer, after Haines and Greenberg).
+ * rt_dirgrid: conservative culling of rays by direction (a light buffer,
+ * after Haines and Greenberg, also used for rays leaving an object).
  *
- * A shadow ray from hit point p runs along u = norm(p - L) seen from the
- * light L. It can only meet an object whose bounding sphere (c, R) it
- * passes within, so u lies in the cone from L around a = norm(c - L) with
- * sin(theta) = R / |c - L|, and then |u - a| <= 2 sin(theta / 2) (the
- * chord). So |u.x - a.x| and |u.z - a.z| are at most that chord, and u.y
- * has a's sign unless the chord reaches y = 0: a square per cone, which is
- * marked on a grid over (u.x, u.z), one grid per hemisphere of u.y.
+ * A ray that starts within distance B of a centre L (a light: shadow rays
+ * run from the surface towards it, so seen from L they start at L; an
+ * object: its reflected and refracted rays start on it) and meets an
+ * object's bounding sphere (c, R) has a parallel copy from L that passes
+ * within R + B of c. So its direction u lies in the cone from L around
+ * a = norm(c - L) with sin(theta) = (R + B) / |c - L|, and then
+ * |u - a| <= 2 sin(theta / 2) (the chord). So |u.x - a.x| and |u.z - a.z|
+ * are at most that chord, and u.y has a's sign unless the chord reaches
+ * y = 0: a square per cone, marked on a grid over (u.x, u.z), one grid per
+ * hemisphere of u.y.
  *
- * R is widened by every way the ray in the test differs from the segment
- * p..L: it starts off the surface (rt_trace's offset, at most off_max),
- * its direction is rounded (well under 2^-14 of its length, at most the
- * largest distance from L to any object), and the bounding-sphere test
- * rounds; the chord gets 2^-12 more for the rounding of a and u. So a
- * cell leaves out only objects the intersection test would miss: images
- * are bit-identical with and without the grid (RT_SHADOW_GRID=0 in the
- * tests). Any case too large to bound in Q16.16 marks every cell.
+ * R is widened by every way the ray in the test differs from the ideal
+ * one: its start is off the surface (rt_trace's offset, at most off_max),
+ * a shadow ray's direction is rounded (well under 2^-14 of its length, at
+ * most the largest distance from L to any object), and the
+ * bounding-sphere test rounds; the chord gets 2^-12 more for the rounding
+ * of a and u. So a cell leaves out only objects the intersection test
+ * would miss: images are bit-identical with and without the grids
+ * (RT_DIR_GRID=0 in the tests). Any case too large to bound in Q16.16
+ * marks every cell.
  */
-#include "rt_shadow.h"
+#include "rt_dirgrid.h"
 
-#if !defined(RT_NO_SHADOWS) && RT_SHADOW_GRID > 0
+#if RT_DIR_GRIDS
 
 #include "rt_libc.h"
 
-#define N RT_SHADOW_GRID
+#define N RT_DIR_GRID
 
 /* Components of c - L beyond this (and radii beyond it) are not culled. */
 #define FAR_LIMIT FX_INT(8192)
@@ -85,7 +89,7 @@ static void cone_of(cone_box *b, const rt_object *o, fx_vec3 lp, fx_t slack)
     b->upper = (int64_t)a.y + chord >= 0;
 }
 
-/* The same map rt_shadow_cell uses, so marking is conservative. */
+/* The same map rt_dir_cell uses, so marking is conservative. */
 static unsigned cell_of(fx_t v, fx_t v0, fx_t s)
 {
     int64_t i = ((int64_t)(v - v0) * s) >> 32;
@@ -97,12 +101,14 @@ static fx_t cells_per_unit(fx_t lo, fx_t hi)
     return (fx_t)(((int64_t)N << 32) / ((int64_t)hi - lo));
 }
 
-void rt_shadow_prepare(rt_shadow_grid *g, const rt_scene *s, fx_vec3 lp)
+void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
+                         const rt_scene *s, fx_vec3 lp, fx_t radius)
 {
     const unsigned n = s->n_objects;
-    memset(g->cell, 0, sizeof g->cell);
-    /* The farthest any hit point lies from the light, and the largest
-     * origin offset: they bound how far a shadow ray strays from p..L. */
+    memset(cell, 0, (size_t)2 * N * N * words * sizeof *cell);
+    g->cell = cell;
+    /* The farthest any hit lies from the centre, and the largest origin
+     * offset: they bound how far a ray strays from its ideal copy. */
     int64_t far = 0;
     fx_t off_max = RT_EPS;
     for (unsigned i = 0; i < n; i++) {
@@ -114,11 +120,11 @@ void rt_shadow_prepare(rt_shadow_grid *g, const rt_scene *s, fx_vec3 lp)
         if (d > far)
             far = d;
     }
-    int64_t sl = (int64_t)off_max + ((far + off_max) >> 12) + FX_ONE / 256;
+    int64_t sl = (int64_t)radius + off_max +
+                 ((far + radius + off_max) >> 12) + FX_ONE / 256;
     fx_t slack = sl > FAR_LIMIT ? FAR_LIMIT : (fx_t)sl;
 
     fx_t x0 = FX_ONE, x1 = -FX_ONE, z0 = FX_ONE, z1 = -FX_ONE;
-    int any = 0;
     for (unsigned i = 0; i < n; i++) {
         cone_box b;
         cone_of(&b, &s->obj[i], lp, slack);
@@ -131,9 +137,8 @@ void rt_shadow_prepare(rt_shadow_grid *g, const rt_scene *s, fx_vec3 lp)
             z0 = b.lo_z < z0 ? b.lo_z : z0;
             z1 = b.hi_z > z1 ? b.hi_z : z1;
         }
-        any = 1;
     }
-    if (!any) { /* nothing can block: an empty range */
+    if (n == 0) { /* nothing to hit: an empty range */
         g->x0 = g->z0 = FX_ONE;
         g->x1 = g->z1 = -FX_ONE;
         g->sx = g->sz = 0;
@@ -167,11 +172,50 @@ void rt_shadow_prepare(rt_shadow_grid *g, const rt_scene *s, fx_vec3 lp)
         for (unsigned iz = iz0; iz <= iz1; iz++)
             for (unsigned ix = ix0; ix <= ix1; ix++) {
                 if (lower)
-                    g->cell[0][iz * N + ix][i / 32] |= bit;
+                    cell[(iz * N + ix) * words + i / 32] |= bit;
                 if (upper)
-                    g->cell[1][iz * N + ix][i / 32] |= bit;
+                    cell[((N + iz) * N + ix) * words + i / 32] |= bit;
             }
     }
+}
+
+/* Takes the next grid from the pool, or returns RT_DIR_NONE. */
+static uint8_t add_grid(rt_dir_grids *gs, unsigned *used, unsigned *next,
+                        const rt_scene *s, fx_vec3 centre, fx_t radius)
+{
+    const unsigned size = 2u * N * N * gs->words;
+    if (*used >= RT_DIR_MAX_GRIDS || *next + size > RT_DIR_POOL_WORDS)
+        return RT_DIR_NONE;
+    rt_dir_grid_prepare(&gs->grid[*used], gs->pool + *next, gs->words, s,
+                        centre, radius);
+    *next += size;
+    return (uint8_t)(*used)++;
+}
+
+void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s)
+{
+    unsigned used = 0, next = 0;
+    gs->words = (s->n_objects + 31u) / 32u;
+    for (unsigned i = 0; i < RT_MAX_LIGHTS; i++)
+        gs->light[i] = RT_DIR_NONE;
+    for (unsigned i = 0; i < RT_MAX_OBJECTS; i++)
+        gs->from[i] = RT_DIR_NONE;
+    if (gs->words == 0)
+        return;
+    /* Shadow rays are the most numerous: lights first. */
+#if !defined(RT_NO_SHADOWS)
+    for (unsigned i = 0; s->shadows && i < s->n_lights && i < RT_MAX_LIGHTS;
+         i++)
+        gs->light[i] = add_grid(gs, &used, &next, s, s->light[i].pos, 0);
+#endif
+#if !defined(RT_NO_REFLECTION) || !defined(RT_NO_REFRACTION)
+    for (unsigned i = 0; i < s->n_objects; i++) {
+        const rt_object *o = &s->obj[i];
+        const rt_material *m = &s->mat[o->material];
+        if (m->reflect > 0 || m->transparency > 0)
+            gs->from[i] = add_grid(gs, &used, &next, s, o->bc, o->br);
+    }
+#endif
 }
 
 #endif

@@ -1,0 +1,69 @@
+/* rt_dirgrid: which objects a ray leaving a known place can hit. Internal. */
+#ifndef RT_DIRGRID_H
+#define RT_DIRGRID_H
+
+#include "rt_internal.h"
+
+/* 1 when the grids are built: RT_DIR_GRID > 0 and some ray kind they cull
+ * (shadow, reflected, refracted) is in the build. */
+#if RT_DIR_GRID > 0 &&                                                        \
+    (!defined(RT_NO_SHADOWS) || !defined(RT_NO_REFLECTION) ||                 \
+     !defined(RT_NO_REFRACTION))
+#define RT_DIR_GRIDS 1
+#else
+#define RT_DIR_GRIDS 0
+#endif
+
+#if RT_DIR_GRIDS
+
+#define RT_DIR_NONE 0xFFu /* no grid: test every object */
+
+/* Directions u from a ball (a light, or an object rays leave from), on a
+ * grid over (u.x, u.z) per hemisphere of u.y: each cell lists the objects
+ * a ray starting in the ball with a direction in the cell can hit. */
+typedef struct {
+    fx_t x0, z0;          /* lower corner of the gridded (u.x, u.z) */
+    fx_t x1, z1;          /* upper corner; outside it nothing can be hit */
+    fx_t sx, sz;          /* cells per unit of u.x and u.z (Q16.16) */
+    const uint32_t *cell; /* 2 RT_DIR_GRID^2 bit sets, hemisphere first */
+} rt_dir_grid;
+
+/* Every grid of one render, in the caller's (the tracer's) memory. */
+typedef struct {
+    unsigned words;                 /* 32-bit words of one bit set */
+    uint8_t light[RT_MAX_LIGHTS];   /* shadow rays to light i: grid */
+    uint8_t from[RT_MAX_OBJECTS];   /* rays leaving object i: grid */
+    rt_dir_grid grid[RT_DIR_MAX_GRIDS];
+    uint32_t pool[RT_DIR_POOL_WORDS];
+} rt_dir_grids;
+
+/* Builds grids for every light, then for every object whose material
+ * reflects or refracts, while RT_DIR_MAX_GRIDS and the pool last; the rest
+ * get RT_DIR_NONE. */
+void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s);
+
+/* Fills g (its bit sets at cell, 2 RT_DIR_GRID^2 * words words) with the
+ * objects of s a ray from within radius of centre can hit. */
+void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
+                         const rt_scene *s, fx_vec3 centre, fx_t radius);
+
+/* The bit set of objects a ray with unit direction u from g's ball may
+ * hit, or NULL when it can hit none. */
+static inline const uint32_t *rt_dir_cell(const rt_dir_grid *g, fx_t ux,
+                                          fx_t uy, fx_t uz, unsigned words)
+{
+    if (ux < g->x0 || ux > g->x1 || uz < g->z0 || uz > g->z1)
+        return 0;
+    /* (u - x0) * sx is below 2^18 * 2^28: the cell is the high word. */
+    uint32_t ix = (uint32_t)(((int64_t)(ux - g->x0) * g->sx) >> 32);
+    uint32_t iz = (uint32_t)(((int64_t)(uz - g->z0) * g->sz) >> 32);
+    if (ix >= RT_DIR_GRID)
+        ix = RT_DIR_GRID - 1;
+    if (iz >= RT_DIR_GRID)
+        iz = RT_DIR_GRID - 1;
+    unsigned c = ((uy > 0) * RT_DIR_GRID + iz) * RT_DIR_GRID + ix;
+    return g->cell + c * words;
+}
+
+#endif
+#endif /* RT_DIRGRID_H */

@@ -1,0 +1,189 @@
+/*
+ * The direction grids (core/rt_dirgrid.c) must be conservative: any object
+ * a shadow ray or a ray leaving an object hits must be listed in the ray's
+ * cell. Random lights and shapes from tiny to huge, and rays aimed to
+ * graze each object's bounding sphere, where a too-narrow cone would show
+ * first.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "harness.h"
+#include "rt_dirgrid.h"
+
+#define D2F(x) ((fx_t)lround((x) * 65536.0))
+
+static uint64_t rng = 0x5eed5eedULL;
+
+static double uni(double lo, double hi)
+{
+    return lo + (hi - lo) * (double)(th_rnd64(&rng) >> 11) * 0x1p-53;
+}
+
+/* log-uniform in [lo, hi] */
+static double logu(double lo, double hi)
+{
+    return exp(uni(log(lo), log(hi)));
+}
+
+static fx_vec3 v3(double x, double y, double z)
+{
+    return fx_v3(D2F(x), D2F(y), D2F(z));
+}
+
+static void random_object(rt_object *o, double spread)
+{
+    memset(o, 0, sizeof *o);
+    double s = logu(1.0 / 64, 64);
+    double x = uni(-spread, spread), y = uni(-spread, spread);
+    double z = uni(-spread, spread);
+    o->kind = (uint8_t)(th_rnd64(&rng) % RT_KIND_COUNT);
+    o->caps = RT_CAP_BOTTOM | RT_CAP_TOP;
+    o->a = v3(x, y, z);
+    o->r = D2F(s);
+    o->h = D2F(s * uni(0.2, 3));
+    if (o->kind == RT_QUAD) {
+        o->b = v3(uni(-s, s), uni(-s, s), uni(-s, s));
+        o->c = v3(uni(-s, s), uni(-s, s), uni(-s, s));
+    } else if (o->kind == RT_BOX) {
+        o->b = v3(x + s * uni(0.1, 2), y + s * uni(0.1, 2),
+                  z + s * uni(0.1, 2));
+    }
+    if (rt_object_prepare(o) != RT_OK)
+        random_object(o, spread); /* degenerate draw: try again */
+}
+
+static int listed(const uint32_t *cell, unsigned i)
+{
+    return cell && ((cell[i / 32] >> (i % 32)) & 1u);
+}
+
+/* A point on the sphere (c, r * f), f a little under or over 1, seen
+ * from q: rays from q through it graze that sphere. */
+static fx_vec3 graze_point(fx_vec3 q, fx_vec3 c, fx_t r)
+{
+    double cx = (c.x - (double)q.x) / 65536.0;
+    double cy = (c.y - (double)q.y) / 65536.0;
+    double cz = (c.z - (double)q.z) / 65536.0;
+    double d = sqrt(cx * cx + cy * cy + cz * cz);
+    double rr = r / 65536.0 * uni(0.9, 1.02);
+    double ux = uni(-1, 1), uy = uni(-1, 1), uz = uni(-1, 1);
+    if (d > 0) { /* across the line of sight */
+        double dot = (ux * cx + uy * cy + uz * cz) / d;
+        ux -= dot * cx / d, uy -= dot * cy / d, uz -= dot * cz / d;
+    }
+    double ul = sqrt(ux * ux + uy * uy + uz * uz);
+    if (ul == 0)
+        ul = ux = 1;
+    return fx_v3_add(c, v3(ux / ul * rr, uy / ul * rr, uz / ul * rr));
+}
+
+static void random_scene(rt_scene *s, double spread)
+{
+    memset(s, 0, sizeof *s);
+    s->n_objects = (uint16_t)(1 + th_rnd64(&rng) % 12);
+    for (unsigned i = 0; i < s->n_objects; i++)
+        random_object(&s->obj[i], spread);
+}
+
+/* Every object the ray hits within tmax must be in its cell. */
+static void check_ray(const rt_scene *s, const rt_ray *r, fx_t tmax,
+                      const uint32_t *cell, long *hits, long *missing)
+{
+    for (unsigned i = 0; i < s->n_objects; i++) {
+        fx_t t;
+        uint8_t part;
+        if (!rt_intersect(&s->obj[i], r, RT_EPS, tmax, &t, &part))
+            continue;
+        ++*hits;
+        if (!listed(cell, i) && ++*missing <= 5)
+            printf("object %u (kind %d) is hit but not listed\n", i,
+                   s->obj[i].kind);
+    }
+}
+
+static rt_ray make_ray(fx_vec3 o, fx_vec3 d)
+{
+    rt_ray r;
+    r.o = o;
+    r.d = d;
+    r.e = rt_unit_err(d);
+    r.small = (uint8_t)rt_small3(o);
+    return r;
+}
+
+/* Shadow rays: from surface points beyond a grazed object towards a
+ * light anywhere, sometimes right beside (or in) an object. */
+static void shadow_trial(double spread, long *hits, long *missing)
+{
+    static rt_scene s;
+    static rt_dir_grid g;
+    static uint32_t cell[2 * RT_DIR_GRID * RT_DIR_GRID];
+    random_scene(&s, spread);
+    const rt_object *near = &s.obj[th_rnd64(&rng) % s.n_objects];
+    fx_vec3 lp = th_rnd64(&rng) % 4 == 0
+        ? fx_v3_add(near->bc, v3(uni(-2, 2), uni(-2, 2), uni(-2, 2)))
+        : v3(uni(-spread, spread), uni(-spread, spread),
+             uni(-spread, spread));
+    rt_dir_grid_prepare(&g, cell, 1, &s, lp, 0);
+    for (int k = 0; k < 400; k++) {
+        const rt_object *b = &s.obj[th_rnd64(&rng) % s.n_objects];
+        fx_vec3 q = graze_point(lp, b->bc, b->br);
+        /* p: on the line from the light through q, beyond q. */
+        fx_vec3 p = fx_v3_add(
+            lp, fx_v3_scale(fx_v3_sub(q, lp), D2F(uni(1.0, 3.0))));
+        fx_vec3 lv = fx_v3_sub(lp, p);
+        fx_vec3 ld = fx_v3_normalize(lv);
+        /* Origin offset as shade() gives it: EPS along some normal. */
+        fx_vec3 n = fx_v3_normalize(v3(uni(-1, 1), uni(-1, 1), uni(-1, 1)));
+        rt_ray sr = make_ray(fx_v3_madd(p, n, RT_EPS), ld);
+        fx_t tmax = fx_sub(fx_v3_dotn(lv, ld), RT_EPS);
+        check_ray(&s, &sr, tmax,
+                  rt_dir_cell(&g, -ld.x, -ld.y, -ld.z, 1), hits, missing);
+    }
+}
+
+/* Rays leaving an object: from anywhere in its bounding sphere (offset as
+ * shade() does), aimed to graze another object's. */
+static void leaving_trial(double spread, long *hits, long *missing)
+{
+    static rt_scene s;
+    static rt_dir_grid g;
+    static uint32_t cell[2 * RT_DIR_GRID * RT_DIR_GRID];
+    random_scene(&s, spread);
+    const rt_object *from = &s.obj[th_rnd64(&rng) % s.n_objects];
+    rt_dir_grid_prepare(&g, cell, 1, &s, from->bc, from->br);
+    for (int k = 0; k < 400; k++) {
+        const rt_object *b = &s.obj[th_rnd64(&rng) % s.n_objects];
+        fx_vec3 o = graze_point(from->bc, from->bc, from->br);
+        o = fx_v3_add(from->bc,
+                      fx_v3_scale(fx_v3_sub(o, from->bc), D2F(uni(0, 1))));
+        fx_vec3 n = fx_v3_normalize(v3(uni(-1, 1), uni(-1, 1), uni(-1, 1)));
+        o = fx_v3_madd(o, n, RT_EPS);
+        fx_vec3 aim = graze_point(o, b->bc, b->br);
+        fx_vec3 d = fx_v3_normalize(fx_v3_sub(aim, o));
+        rt_ray r = make_ray(o, d);
+        check_ray(&s, &r, FX_MAX, rt_dir_cell(&g, d.x, d.y, d.z, 1), hits,
+                  missing);
+    }
+}
+
+int main(void)
+{
+    long hits = 0, missing = 0;
+    for (int t = 0; t < 1500; t++)
+        shadow_trial(t % 10 == 0 ? 4000.0 : 40.0, &hits, &missing);
+    CHECK_EQ(missing, 0);
+    /* The aim must actually produce blockers, or the test checks nothing. */
+    CHECK(hits > 100000);
+    printf("light grids: %ld blocking shadow rays, %ld not listed\n", hits,
+           missing);
+    hits = missing = 0;
+    for (int t = 0; t < 1500; t++)
+        leaving_trial(t % 10 == 0 ? 4000.0 : 40.0, &hits, &missing);
+    CHECK_EQ(missing, 0);
+    CHECK(hits > 100000);
+    printf("object grids: %ld hits of leaving rays, %ld not listed\n", hits,
+           missing);
+    return th_summary();
+}
