@@ -197,14 +197,28 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
     uint32_t ud = (uint32_t)(den24 < 0 ? -den24 : den24);
     if ((un >> 32) >= ud)
         return 0;
-    int64_t tt = rt_udiv64_32(un, ud);
-    if (tt <= tmin || tt >= tmax)
+    uint32_t tq = rt_udiv64_32(un, ud);
+    if ((int64_t)tq <= tmin || (int64_t)tq >= tmax)
         return 0;
-    int64_t qx = (int64_t)r->o.x + ((tt * r->d.x + 0x8000) >> 16) - o->a.x;
-    int64_t qy = (int64_t)r->o.y + ((tt * r->d.y + 0x8000) >> 16) - o->a.y;
-    int64_t qz = (int64_t)r->o.z + ((tt * r->d.z + 0x8000) >> 16) - o->a.z;
-    int64_t u = qx * o->pu.x + qy * o->pu.y + qz * o->pu.z;
-    int64_t v = qx * o->pv.x + qy * o->pv.y + qz * o->pv.z;
+    const fx_t tt = (fx_t)tq; /* below tmax, so it fits */
+    int64_t qx = (int64_t)r->o.x - o->a.x +
+                 (((int64_t)tt * r->d.x + 0x8000) >> 16);
+    int64_t qy = (int64_t)r->o.y - o->a.y +
+                 (((int64_t)tt * r->d.y + 0x8000) >> 16);
+    int64_t qz = (int64_t)r->o.z - o->a.z +
+                 (((int64_t)tt * r->d.z + 0x8000) >> 16);
+    int64_t u, v;
+    if (qx == (int32_t)qx && qy == (int32_t)qy && qz == (int32_t)qz) {
+        /* The usual case: 32-bit operands, the same sums. */
+        const int32_t x = (int32_t)qx, y = (int32_t)qy, z = (int32_t)qz;
+        u = (int64_t)x * o->pu.x + (int64_t)y * o->pu.y +
+            (int64_t)z * o->pu.z;
+        v = (int64_t)x * o->pv.x + (int64_t)y * o->pv.y +
+            (int64_t)z * o->pv.z;
+    } else {
+        u = qx * o->pu.x + qy * o->pu.y + qz * o->pu.z;
+        v = qx * o->pv.x + qy * o->pv.y + qz * o->pv.z;
+    }
     /* Inclusive by RT_QUAD_SLACK ulps plus 2^-17 of the quad's size: pu
      * and pv are rounded to 2^-16, so (p - a).pu at a shared edge can land
      * just outside both neighbours, by an amount that grows with the
@@ -215,7 +229,7 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
     if (u < -sl || v < -sl || u > ((int64_t)o->lu << 16) + sl ||
         v > ((int64_t)o->lv << 16) + sl)
         return 0;
-    *t = (fx_t)tt;
+    *t = tt;
     *part = 0;
     return 1;
 }
