@@ -148,7 +148,7 @@ static inline fx_t fx_from_q32(int64_t q)
     /* q >> 16 fits in 32 bits exactly when the high word is in
      * [-2^15, 2^15); then only FX_MAX plus the half bit can overflow. */
     int32_t hi = (int32_t)(q >> 32);
-    if ((uint32_t)(hi + 0x8000) > 0xFFFFu)
+    if ((uint32_t)hi + 0x8000u > 0xFFFFu) /* unsigned: any hi */
         return (hi >> 31) ^ FX_MAX;
     fx_t r = (fx_t)(((uint32_t)hi << 16) | ((uint32_t)q >> 16));
     return r == FX_MAX ? r : r + (fx_t)(((uint32_t)q >> 15) & 1);

@@ -62,7 +62,7 @@ static inline fx_t fx_madd1(fx_t a, fx_t b, fx_t s)
     int32_t hi = (int32_t)(p >> 32);
     /* The usual case: the rounded product fits in 32 bits, and a 32-bit
      * add with an overflow check gives the saturated sum. */
-    if ((uint32_t)(hi + 0x8000) <= 0xFFFFu)
+    if ((uint32_t)hi + 0x8000u <= 0xFFFFu)
         return fx_add(a, (fx_t)(((uint32_t)hi << 16) | ((uint32_t)p >> 16)));
     return fx_sat64((int64_t)a + (p >> 16));
 }
