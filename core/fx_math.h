@@ -233,7 +233,8 @@ static inline uint8_t fx_to_u8(fx_t c)
         return 0;
     if (c >= FX_ONE)
         return 255;
-    return (uint8_t)(((int64_t)c * 255 + 0x8000) >> 16);
+    /* c < 2^16, so the product fits 32 bits. */
+    return (uint8_t)(((uint32_t)c * 255u + 0x8000u) >> 16);
 }
 
 #endif /* FX_MATH_H */

@@ -202,10 +202,6 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
     defined(RT_NO_REFRACTION)
     (void)p_out, (void)skip_out; /* no secondary rays in this build */
 #endif
-    fx_t wl = fx_sub(fx_sub(FX_ONE, m->reflect), m->transparency);
-    if (wl < 0)
-        wl = 0;
-
     rt_rgb c;
     fx_t kdl = tr->kdl[o->material];
 #if defined(RT_NO_TEXTURES)
@@ -216,6 +212,9 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
     if (plain) {
         c = tr->amb[o->material];
     } else {
+        fx_t wl = fx_sub(fx_sub(FX_ONE, m->reflect), m->transparency);
+        if (wl < 0)
+            wl = 0;
         c = rgb(0, 0, 0);
         rgb_madd(&c, rgb_mul(base, s->ambient), fx_mul(wl, m->ambient));
     }
