@@ -186,6 +186,7 @@ static fx_t clamp01(fx_t v)
 typedef struct {
     rt_span span[RT_MAX_OBJECTS];
     unsigned count;
+    int32_t lo, hi; /* columns outside [lo, hi] can hit nothing */
     fx_vec3 base[RT_MAX_SPP_SIDE]; /* w + sy up for each sample row */
 } row_spans;
 
@@ -210,6 +211,14 @@ static void row_setup(row_spans *rs, const rt_tracer *tr, const cam_frame *cf,
     }
     rs->count = s->n_objects;
 #endif
+    rs->lo = INT32_MAX;
+    rs->hi = -1;
+    for (unsigned k = 0; k < rs->count; k++) {
+        if (rs->span[k].x0 < rs->lo)
+            rs->lo = rs->span[k].x0;
+        if (rs->span[k].x1 > rs->hi)
+            rs->hi = rs->span[k].x1;
+    }
 }
 
 /* One pixel: the mean of its n x n samples (cf->n), rounded to 8 bits. */
@@ -222,7 +231,20 @@ static void pixel(const rt_tracer *tr, const cam_frame *cf,
     (void)y;
     /* At most 16 samples of at most 2^16 each: 32 bits hold the sum. */
     uint32_t sum[3] = { 0, 0, 0 };
-    for (unsigned j = 0; j < n; j++) {
+    const int covered = (int32_t)x >= rs->lo && (int32_t)x <= rs->hi;
+    if (!covered) {
+        /* No object can be hit: every sample sees the background, and
+         * needs no ray (rt_trace_camera would return the background). */
+        const rt_rgb bg = tr->scene->background;
+#if RT_STATS
+        if (tr->stats)
+            tr->stats->primary += spp;
+#endif
+        sum[0] = (uint32_t)clamp01(bg.r) * spp;
+        sum[1] = (uint32_t)clamp01(bg.g) * spp;
+        sum[2] = (uint32_t)clamp01(bg.b) * spp;
+    }
+    for (unsigned j = 0; covered && j < n; j++) {
         fx_vec3 base = rs->base[j];
         for (unsigned i = 0; i < n; i++) {
             fx_t sx = cam_offset(cf, (int32_t)(2 * x * n + 2 * i + 1) - wn);
