@@ -54,8 +54,19 @@ static int bsphere(const fx_vec3 *cp, fx_t r, int small, const rt_ray *ray,
         /* |t| <= |oc| < sqrt(3) 2^30, so t fits; t +- r may not. */
         int32_t t32 = (int32_t)((q + 0x8000) >> 16);
         t32 -= (int32_t)(((int64_t)t32 * ray->e + ((int64_t)1 << 31)) >> 32);
+#if FX_HAVE_OVERFLOW_BUILTINS
+        /* The same tests in 32 bits (r >= 0): t32 + r <= tmin is
+         * t32 <= tmin - r, false when that underflows; t32 - r >= tmax is
+         * false when t32 - r underflows. */
+        fx_t lim, lo;
+        if (!__builtin_sub_overflow(tmin, r, &lim) && t32 <= lim)
+            return 0;
+        if (!__builtin_sub_overflow(t32, r, &lo) && lo >= tmax)
+            return 0;
+#else
         if ((int64_t)t32 + r <= tmin || (int64_t)t32 - r >= tmax)
             return 0;
+#endif
         /* Each h component is bounded by |oc| (h is a projection). */
         int32_t hx = ox - (int32_t)(((int64_t)t32 * ray->d.x + 0x8000) >> 16);
         int32_t hy = oy - (int32_t)(((int64_t)t32 * ray->d.y + 0x8000) >> 16);
