@@ -161,7 +161,8 @@ static fx_t fx_powi(fx_t x, unsigned n)
 /* Mirror direction d - 2 (d.n) n, renormalised. */
 static fx_vec3 reflect_dir(fx_vec3 d, fx_vec3 n)
 {
-    return fx_v3_normalize(fx_v3_madd(d, n, -2 * fx_v3_dotn(d, n)));
+    /* d and n are unit vectors: |2 d.n| <= 2. */
+    return fx_v3_normalize(fx_v3_madd_unit(d, n, -2 * fx_v3_dotn(d, n)));
 }
 #endif
 
@@ -186,7 +187,7 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
     rt_rgb base = m->color;
 #if !defined(RT_NO_TEXTURES)
     if (m->texture != RT_TEX_NONE) /* read inside: see render-model.md */
-        base = rt_texel(m, o, fx_v3_madd(p, ng_out, -RT_EPS));
+        base = rt_texel(m, o, fx_v3_madd_unit(p, ng_out, -RT_EPS));
 #endif
     /* Cylinders and cones are solved in a frame whose unit is 2^ushift
      * ulps, so a secondary ray's root on its own surface is off by about
@@ -196,7 +197,7 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
     fx_t off = RT_EPS;
     if ((o->kind == RT_CYLINDER || o->kind == RT_CONE) && o->ushift > 4)
         off = (fx_t)1 << (o->ushift + 2);
-    fx_vec3 p_out = fx_v3_madd(p, ng, off);
+    fx_vec3 p_out = fx_v3_madd_unit(p, ng, off); /* off <= 2^17 */
     unsigned skip_out = (o->convex && outside) ? oi : NO_SKIP;
 #if defined(RT_NO_SHADOWS) && defined(RT_NO_REFLECTION) && \
     defined(RT_NO_REFRACTION)
@@ -266,7 +267,7 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
 #if !defined(RT_NO_SPECULAR)
         if (m->specular > 0) {
             /* R = 2 (n.l) n - l; rv = R.v with v = -d. */
-            fx_vec3 rl = fx_v3_madd(fx_v3_neg(ld), n, 2 * ndl);
+            fx_vec3 rl = fx_v3_madd_unit(fx_v3_neg(ld), n, 2 * ndl);
             fx_t rv = fx_neg(fx_v3_dotn(rl, r->d));
             if (rv > 0)
                 rgb_madd(&c, l->color, fx_mul(m->specular,
@@ -303,7 +304,7 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
             unsigned skip_in =
                 (o->convex && (!outside || o->kind == RT_QUAD)) ? oi
                                                                  : NO_SKIP;
-            rt_ray_set(&tr2, fx_v3_madd(p, ng, -off), td);
+            rt_ray_set(&tr2, fx_v3_madd_unit(p, ng, -off), td);
             RT_COUNT(tr, refraction);
             rgb_madd(&c, rt_trace(tr, &tr2, depth + 1, skip_in, oi),
                      m->transparency);

@@ -145,6 +145,34 @@ static void test_componentwise(void)
     CHECK_EQ(bad, 0);
 }
 
+/* fx_v3_madd_unit against the exact answer, inside its stated domain:
+ * |b| <= 1.0 and |s| <= 2^30, edges included. */
+static void test_madd_unit(void)
+{
+    static const fx_t bs[] = { FX_ONE, -FX_ONE, FX_ONE - 1, 1, -1, 0 };
+    static const fx_t ss[] = { 0x40000000, -0x40000000, 0x3FFFFFFF, 1, -1,
+                               0, 1 << 17, -(1 << 17), 128, -128 };
+    long bad = 0;
+    for (long i = 0; i < N_RANDOM; i++) {
+        fx_vec3 a = rnd_vec();
+        fx_vec3 b = fx_v3((fx_t)(rnd32() % (2 * FX_ONE + 1)) - FX_ONE,
+                          (fx_t)(rnd32() % (2 * FX_ONE + 1)) - FX_ONE,
+                          bs[rnd32() % 6]);
+        fx_t s = i % 4 == 0 ? ss[rnd32() % 10]
+                            : (fx_t)((int64_t)(rnd32() % 0x80000001u) -
+                                     0x40000000);
+        fx_vec3 m = fx_v3_madd_unit(a, b, s);
+        const fx_t *pa = &a.x, *pb = &b.x, *pm = &m.x;
+        for (int k = 0; k < 3; k++)
+            if (pm[k] != sat128(pa[k] + round16_wide((i128)pb[k] * s))) {
+                bad++;
+                SHOW_FAIL("madd_unit %d on (%d, %d, s=%d)\n", k, pa[k],
+                          pb[k], s);
+            }
+    }
+    CHECK_EQ(bad, 0);
+}
+
 static void check_dot_cross_len2(fx_vec3 a, fx_vec3 b, long *bad)
 {
     i128 px = (i128)a.x * b.x, py = (i128)a.y * b.y, pz = (i128)a.z * b.z;
@@ -369,6 +397,7 @@ static void test_normalize(void)
 int main(void)
 {
     test_componentwise();
+    test_madd_unit();
     test_dot_cross_len2();
     test_length();
     test_normalize();
