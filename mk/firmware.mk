@@ -4,8 +4,9 @@
 #   make qemu     BOARD=b [same]    render under QEMU to build/<b>/out.ppm
 #   make size     BOARD=b           flash, RAM and stack of the firmware
 #
-# Boards: an385 (Cortex-M3), m0 (Cortex-M0 code on mps2-an385), microbit
-# (nRF51, Cortex-M0, 16 KB RAM), an505 (Cortex-M33), rv32 (QEMU virt).
+# Boards (mk/boards/*.mk): an385 (Cortex-M3), m0 (Cortex-M0 code on
+# mps2-an385), microbit (nRF51, Cortex-M0, 16 KB RAM), an505 (Cortex-M33),
+# rv32 (QEMU virt).
 # WIDTH, HEIGHT and SPP of 0 mean "the scene's default"; ADAPTIVE=T
 # (1..255, with SPP > 1) turns on adaptive anti-aliasing (docs/effects.md).
 # FW_APP=bringup builds port/baremetal/bringup.c instead of the renderer
@@ -51,68 +52,21 @@ ARM_PREFIX ?= arm-none-eabi-
 RISCV_PREFIX ?= riscv64-unknown-elf-
 
 # ---- Boards -----------------------------------------------------------------
-# FW_CPU: code generation; FW_OPT: optimisation; FW_CAPS: capacity overrides
-# (rt_config.h, and FW_ROW_PIXELS, the row buffer of main.c); FW_ICOUNT: the -icount shift whose instruction count the
-# board's port_cycles_to_insns() undoes.
+# One file per board, mk/boards/<board>.mk (docs/porting.md), sets:
+# FW_PREFIX: the compiler prefix ($(ARM_PREFIX) or $(RISCV_PREFIX));
+# FW_CPU: code generation; FW_OPT: optimisation; FW_CAPS: capacity
+# overrides (rt_config.h, and FW_ROW_PIXELS, the row buffer of main.c);
+# FW_LD: the linker script; FW_BOARD_SRC: the board and startup files;
+# FW_QEMU: the QEMU command without -icount and -kernel; FW_ICOUNT: the
+# -icount shift whose instruction count the board's port_cycles_to_insns()
+# undoes.
 
 FW_ARM_QEMU := qemu-system-arm -display none -monitor none -serial none \
     -semihosting-config enable=on,target=native
 
-ifeq ($(BOARD),an385)
-FW_PREFIX := $(ARM_PREFIX)
-FW_CPU := -mcpu=cortex-m3 -mthumb
-FW_OPT := -O2
-FW_CAPS :=
-FW_LD := linker/an385.ld
-FW_BOARD_SRC := port/baremetal/board_an385.c port/baremetal/startup_cortexm.c
-FW_QEMU := $(FW_ARM_QEMU) -M mps2-an385
-FW_ICOUNT := 7
-else ifeq ($(BOARD),m0)
-FW_PREFIX := $(ARM_PREFIX)
-FW_CPU := -mcpu=cortex-m0 -mthumb
-FW_OPT := -O2
-FW_CAPS :=
-FW_LD := linker/an385.ld
-FW_BOARD_SRC := port/baremetal/board_an385.c port/baremetal/startup_cortexm.c
-FW_QEMU := $(FW_ARM_QEMU) -M mps2-an385
-FW_ICOUNT := 7
-else ifeq ($(BOARD),microbit)
-# 16 KB of RAM for everything: small capacities keep rt_scene small, the
-# row buffer holds 320 pixels, and -Os keeps the stack frames small (flash
-# is no constraint). RT_MAX_WIDTH stays large so that any scene's `image`
-# line parses; WIDTH must then be at most 320. Three direction grids
-# (1.5 KB of stack) leave room for the parser's frames in text mode.
-FW_PREFIX := $(ARM_PREFIX)
-FW_CPU := -mcpu=cortex-m0 -mthumb
-FW_OPT := -Os
-FW_CAPS := -DRT_MAX_OBJECTS=16 -DRT_MAX_MATERIALS=12 -DRT_MAX_LIGHTS=2 \
-    -DRT_MAX_NAME=15 -DFW_ROW_PIXELS=320 -DRT_DIR_MAX_GRIDS=3
-FW_LD := linker/microbit.ld
-FW_BOARD_SRC := port/baremetal/board_microbit.c \
-    port/baremetal/startup_cortexm.c
-FW_QEMU := $(FW_ARM_QEMU) -M microbit
-FW_ICOUNT := 7
-else ifeq ($(BOARD),an505)
-# Soft-float ABI: the core has no floating point, and nothing may touch the
-# FPU (it stays disabled in CPACR).
-FW_PREFIX := $(ARM_PREFIX)
-FW_CPU := -mcpu=cortex-m33 -mthumb -mfloat-abi=soft
-FW_OPT := -O2
-FW_CAPS :=
-FW_LD := linker/an505.ld
-FW_BOARD_SRC := port/baremetal/board_an505.c port/baremetal/startup_cortexm.c
-FW_QEMU := $(FW_ARM_QEMU) -M mps2-an505
-FW_ICOUNT := 7
-else ifeq ($(BOARD),rv32)
-FW_PREFIX := $(RISCV_PREFIX)
-FW_CPU := -march=rv32imac -misa-spec=2.2 -mabi=ilp32 -mcmodel=medany
-FW_OPT := -O2
-FW_CAPS :=
-FW_LD := linker/rv32.ld
-FW_BOARD_SRC := port/baremetal/board_rv32.c port/baremetal/startup_rv32.c
-FW_QEMU := qemu-system-riscv32 -M virt -bios none -display none \
-    -monitor none -serial none -semihosting-config enable=on,target=native
-FW_ICOUNT := 0
+FW_BOARDS := $(sort $(basename $(notdir $(wildcard mk/boards/*.mk))))
+ifneq ($(filter $(BOARD),$(FW_BOARDS)),)
+include mk/boards/$(BOARD).mk
 endif
 
 # ---- Build ------------------------------------------------------------------
@@ -177,8 +131,8 @@ fw_update = cat >$1.$$$$ && if cmp -s $1.$$$$ $1; then rm -f $1.$$$$; \
 firmware: $(FW_ELF)
 
 fw-check-board:
-	@$(if $(FW_LD),true,echo "Unknown BOARD=$(BOARD); use an385, m0, \
-	    microbit, an505 or rv32" >&2; exit 1)
+	@$(if $(FW_LD),true,echo "Unknown BOARD=$(BOARD); the boards are" \
+	    "$(FW_BOARDS) (mk/boards/*.mk)" >&2; exit 1)
 	@command -v $(FW_CC) >/dev/null || { echo "$(FW_CC) not found; install" \
 	    "it with: apt-get install --no-install-recommends $(FW_CC_PKG)" >&2; \
 	    exit 1; }
@@ -318,8 +272,9 @@ $(FW_ELF): $(FW_OBJ) $(FW_LD) $(FW_FLAGS_STAMP)
 # The image goes to out.ppm (semihosting stdout), the figures to stderr
 # (semihosting stderr) and to qemu.log. The exit status is the firmware's.
 # The Debian packages of the board's compiler and QEMU, for messages.
-FW_CC_PKG = $(if $(filter rv32,$(BOARD)),gcc-riscv64-unknown-elf,gcc-arm-none-eabi)
-FW_QEMU_PKG = $(if $(filter rv32,$(BOARD)),qemu-system-misc,qemu-system-arm)
+FW_RISCV_BOARD = $(filter $(RISCV_PREFIX),$(FW_PREFIX))
+FW_CC_PKG = $(if $(FW_RISCV_BOARD),gcc-riscv64-unknown-elf,gcc-arm-none-eabi)
+FW_QEMU_PKG = $(if $(FW_RISCV_BOARD),qemu-system-misc,qemu-system-arm)
 
 qemu: $(FW_ELF)
 	$(Q)command -v $(firstword $(FW_QEMU)) >/dev/null || { \

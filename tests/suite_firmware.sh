@@ -97,7 +97,7 @@ render() {
 check_elf() {
     local name=$1 elf=build/$b/fixtrace.elf nm=arm-none-eabi-nm
     shift
-    [ "$b" = rv32 ] && nm=riscv64-unknown-elf-nm
+    grep -q 'RISCV_PREFIX' "mk/boards/$b.mk" && nm=riscv64-unknown-elf-nm
     syms=$("$nm" "$elf" | awk '{print $NF}')
     sf=$(echo "$syms" | grep -E "$SOFT_FLOAT")
     if [ -z "$sf" ]; then
@@ -227,14 +227,18 @@ for r in "seed $SEED $W $H" "other $OTHER $W $H" "seed320 $SEED 320 240"; do
 done
 echo "scenes: $SEED and $OTHER"
 
+# Every board that has a mk/boards/<board>.mk, with the tools its
+# architecture needs.
+all_boards=$(cd mk/boards && ls *.mk | sed 's/\.mk$//')
 boards=""
-for b in an385 m0 microbit an505 rv32; do
-    case $b in
-    rv32) tools="riscv64-unknown-elf-gcc qemu-system-riscv32"
-        pkgs="gcc-riscv64-unknown-elf qemu-system-misc" ;;
-    *) tools="arm-none-eabi-gcc qemu-system-arm"
-        pkgs="gcc-arm-none-eabi qemu-system-arm" ;;
-    esac
+for b in $all_boards; do
+    if grep -q 'RISCV_PREFIX' "mk/boards/$b.mk"; then
+        tools="riscv64-unknown-elf-gcc qemu-system-riscv32"
+        pkgs="gcc-riscv64-unknown-elf qemu-system-misc"
+    else
+        tools="arm-none-eabi-gcc qemu-system-arm"
+        pkgs="gcc-arm-none-eabi qemu-system-arm"
+    fi
     missing=""
     for t in $tools; do
         command -v "$t" >/dev/null || missing="${missing:+$missing }$t"
@@ -254,7 +258,7 @@ done
 wait
 
 pass=0 fail=0 skip=0
-for b in an385 m0 microbit an505 rv32; do
+for b in $all_boards; do
     [ -f "$tmp/$b.info" ] && cat "$tmp/$b.info"
     while IFS= read -r line; do
         case $line in

@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 MAKE=${MAKE:-make}
 echo "| board | mode | instructions | per pixel | stack used | flash | RAM (data+bss) | stack reserved |"
 echo "|---|---|---|---|---|---|---|---|"
-for b in an385 m0 microbit an505 rv32; do
+for b in $(cd mk/boards && ls *.mk | sed 's/\.mk$//'); do
     for mode in tables text; do
         p=$([ $mode = tables ] && echo 1 || echo 0)
         dir=build/boards/$b-$mode

@@ -3,7 +3,7 @@
  *
  * Copy it to board_<name>.c, change the "#if 0" below to "#if 1" and fill
  * in every place marked FILL IN. With linker/template.ld copied to
- * linker/<name>.ld and a few lines in mk/firmware.mk, that is the whole
+ * linker/<name>.ld and a fragment mk/boards/<name>.mk, that is the whole
  * port: the startup code (startup_cortexm.c or startup_rv32.c), the output
  * channels over semihosting (semihost.c), the stack painting (common.c)
  * and the firmware itself (main.c) are shared by every board.
@@ -42,12 +42,33 @@
 #define BOARD_SLOW_TICKS 250000u
 
 /* FILL IN: instructions per fast tick as a fraction NUM / DEN, for the
- * -icount shift given to the board in mk/firmware.mk (FW_ICOUNT). At
+ * -icount shift given to the board in mk/boards/<name>.mk (FW_ICOUNT). At
  * shift 7 an instruction takes 128 ns; a 25 MHz counter ticks every 40 ns,
  * so one tick is 40 / 128 = 5 / 16 instruction. With shift 0 and a
  * counter of instructions (RISC-V minstret): 1 / 1. */
 #define BOARD_INSNS_NUM 5u
 #define BOARD_INSNS_DEN 16u
+
+/* FILL IN: 1 to make the lowest 32 bytes of the stack a no-access region
+ * of the ARMv7-M MPU (Cortex-M3, M4, M7), so that an overflow faults at
+ * once instead of writing below RAM; tests/suite_firmware.sh overflows the
+ * stack on purpose and wants a fault exit. 0 for a part without that MPU:
+ * then guard the stack another way (MSPLIM on ARMv8-M, board_an505.c; a
+ * PMP region on RISC-V, board_rv32.c). The linker script aligns the stack
+ * to 32 bytes. */
+#if defined(__arm__)
+#define BOARD_MPU_GUARD 1
+#else
+#define BOARD_MPU_GUARD 0 /* RISC-V: a PMP region instead (board_rv32.c) */
+#endif
+
+#if BOARD_MPU_GUARD
+#define MPU_CTRL (*(volatile uint32_t *)0xE000ED94u)
+#define MPU_RNR (*(volatile uint32_t *)0xE000ED98u)
+#define MPU_RBAR (*(volatile uint32_t *)0xE000ED9Cu)
+#define MPU_RASR (*(volatile uint32_t *)0xE000EDA0u)
+extern uint32_t _sstack[];
+#endif
 
 /**********************
  *   GLOBAL FUNCTIONS
@@ -66,9 +87,15 @@ void port_init(void)
      * starting (the nRF51's TIMER0 does: board_microbit.c). A Cortex-M4F
      * or M33 built for the hard-float ABI must enable the FPU here (CPACR
      * at 0xE000ED88, bits 20-23) before any floating-point instruction;
-     * the core itself never uses one. Optionally, protect the lowest bytes
-     * of the stack (_sstack) with the MPU or a PMP region, so an overflow
-     * faults at once (board_an385.c, board_rv32.c). */
+     * the core itself never uses one. */
+
+#if BOARD_MPU_GUARD
+    MPU_RNR = 0;
+    MPU_RBAR = (uint32_t)(uintptr_t)_sstack;
+    MPU_RASR = (1u << 28) | (4u << 1) | 1u; /* XN, no access, 32 B, on */
+    MPU_CTRL = 5u; /* enable, default map for everything else */
+    __asm__ volatile("dsb\n\tisb" : : : "memory");
+#endif
 }
 
 /* The cycle counter as 64 bits that do not wrap within a run. */
