@@ -190,12 +190,17 @@ static int hit_sphere(const rt_object *o, const rt_ray *r, fx_t tmin,
 static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
                     fx_t tmax, fx_t *t, uint8_t *part)
 {
-    int64_t den = fx_v3_dot_q32(r->d, o->n);
+    /* A flat quad (rt_object.flat) has n = (0, n.y, 0): the same sums
+     * without the zero terms. */
+    const int flat = o->flat;
+    int64_t den = flat ? (int64_t)r->d.y * o->n.y : fx_v3_dot_q32(r->d, o->n);
     if (den < RT_PAR_Q32 && den > -RT_PAR_Q32)
         return 0;
     /* num = (dist - o.n) in Q32.32; t = num / den, with den kept to 24
      * fractional bits so grazing rays keep their precision. */
-    int64_t num = (int64_t)o->dist * 65536 - fx_v3_dot_q32(r->o, o->n);
+    int64_t num = (int64_t)o->dist * 65536 -
+                  (flat ? (int64_t)r->o.y * o->n.y
+                        : fx_v3_dot_q32(r->o, o->n));
     if ((num < 0) != (den < 0))
         return 0;
     int64_t den24 = den >> 8;
@@ -214,21 +219,30 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
     const fx_t tt = (fx_t)tq; /* below tmax, so it fits */
     int64_t qx = (int64_t)r->o.x - o->a.x +
                  (((int64_t)tt * r->d.x + 0x8000) >> 16);
-    int64_t qy = (int64_t)r->o.y - o->a.y +
-                 (((int64_t)tt * r->d.y + 0x8000) >> 16);
     int64_t qz = (int64_t)r->o.z - o->a.z +
                  (((int64_t)tt * r->d.z + 0x8000) >> 16);
     int64_t u, v;
-    if (qx == (int32_t)qx && qy == (int32_t)qy && qz == (int32_t)qz) {
-        /* The usual case: 32-bit operands, the same sums. */
-        const int32_t x = (int32_t)qx, y = (int32_t)qy, z = (int32_t)qz;
-        u = (int64_t)x * o->pu.x + (int64_t)y * o->pu.y +
-            (int64_t)z * o->pu.z;
-        v = (int64_t)x * o->pv.x + (int64_t)y * o->pv.y +
-            (int64_t)z * o->pv.z;
+    if (flat == 1) { /* pu = (0, 0, pu.z), pv = (pv.x, 0, 0) */
+        u = qz * o->pu.z;
+        v = qx * o->pv.x;
+    } else if (flat == 2) { /* pu = (pu.x, 0, 0), pv = (0, 0, pv.z) */
+        u = qx * o->pu.x;
+        v = qz * o->pv.z;
     } else {
-        u = qx * o->pu.x + qy * o->pu.y + qz * o->pu.z;
-        v = qx * o->pv.x + qy * o->pv.y + qz * o->pv.z;
+        int64_t qy = (int64_t)r->o.y - o->a.y +
+                     (((int64_t)tt * r->d.y + 0x8000) >> 16);
+        if (qx == (int32_t)qx && qy == (int32_t)qy && qz == (int32_t)qz) {
+            /* The usual case: 32-bit operands, the same sums. */
+            const int32_t x = (int32_t)qx, y = (int32_t)qy;
+            const int32_t z = (int32_t)qz;
+            u = (int64_t)x * o->pu.x + (int64_t)y * o->pu.y +
+                (int64_t)z * o->pu.z;
+            v = (int64_t)x * o->pv.x + (int64_t)y * o->pv.y +
+                (int64_t)z * o->pv.z;
+        } else {
+            u = qx * o->pu.x + qy * o->pu.y + qz * o->pu.z;
+            v = qx * o->pv.x + qy * o->pv.y + qz * o->pv.z;
+        }
     }
     /* Inclusive by RT_QUAD_SLACK ulps plus 2^-17 of the quad's size: pu
      * and pv are rounded to 2^-16, so (p - a).pu at a shared edge can land

@@ -84,6 +84,7 @@ static rt_status prepare_shape(rt_object *o);
 
 rt_status rt_object_prepare(rt_object *o)
 {
+    o->flat = 0;
     rt_status st = prepare_shape(o);
     o->small = st == RT_OK && o->br < ((fx_t)1 << 29) && rt_small3(o->bc);
     return st;
@@ -113,6 +114,12 @@ static rt_status prepare_shape(rt_object *o)
         if (o->lu <= 0 || o->lv <= 0)
             return RT_ERR_DEGENERATE;
         o->dist = fx_v3_dot(o->n, o->a);
+        if (o->n.x == 0 && o->n.z == 0 && o->pu.y == 0 && o->pv.y == 0) {
+            if (o->pu.x == 0 && o->pv.z == 0)
+                o->flat = 1; /* pu along z, pv along x */
+            else if (o->pu.z == 0 && o->pv.x == 0)
+                o->flat = 2; /* pu along x, pv along z */
+        }
         /* Centre a + (e1 + e2) / 2, radius half the longer diagonal. */
         fx_vec3 half1 = fx_v3(e1.x / 2, e1.y / 2, e1.z / 2);
         fx_vec3 half2 = fx_v3(e2.x / 2, e2.y / 2, e2.z / 2);

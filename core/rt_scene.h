@@ -77,6 +77,9 @@ typedef struct {
     uint8_t convex;   /* derived: a ray leaving the surface cannot re-hit it */
     uint8_t small;    /* derived: bounding sphere within 8192 units (the
                          32-bit intersection path applies) */
+    uint8_t flat;     /* derived, quads: 1 if n is along y, pu along z and
+                         pv along x; 2 if n along y, pu along x, pv along z
+                         (the intersection skips the zero terms); else 0 */
     fx_vec3 a;        /* sphere: centre; quad: corner; box: min;
                          cylinder, cone: base centre */
     fx_vec3 b;        /* quad: edge1; box: max */

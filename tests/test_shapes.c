@@ -216,6 +216,54 @@ static void random_spheres(void)
            "off the surface beyond the bound: %d\n", n, bad_hit, bad_t);
 }
 
+/* Flat quads (rt_object.flat, n along y) take a short path in the
+ * quad test: it must give what the general path gives, bit for bit, for
+ * both edge orders, both normal signs, and rays from anywhere. */
+static void flat_quads(void)
+{
+    uint64_t st = 0x9E3779B97F4A7C15ull;
+    long n = 0, bad = 0, hits = 0, flats[3] = { 0, 0, 0 };
+    for (int q = 0; q < 400; q++) {
+        double sz = 0.01 * (double)(1 + th_rnd64(&st) % 4000);
+        double cx = (double)(th_rnd64(&st) % 2001) - 1000.0;
+        double cy = (double)(th_rnd64(&st) % 201) - 100.0;
+        double cz = (double)(th_rnd64(&st) % 2001) - 1000.0;
+        rt_object o = make(RT_QUAD, cx, cy, cz, 0, 0);
+        double e1 = sz * (th_rnd64(&st) & 1 ? 1 : -1);
+        double e2 = sz * 0.5 * (th_rnd64(&st) & 1 ? 1 : -1);
+        int swap = (int)(th_rnd64(&st) & 1);
+        o.b = swap ? fx_v3(D2F(e1), 0, 0) : fx_v3(0, 0, D2F(e1));
+        o.c = swap ? fx_v3(0, 0, D2F(e2)) : fx_v3(D2F(e2), 0, 0);
+        if (rt_object_prepare(&o) != RT_OK)
+            continue;
+        flats[o.flat]++;
+        rt_object g = o;
+        g.flat = 0;
+        for (int k = 0; k < 500; k++) {
+            double ox = cx + (double)(th_rnd64(&st) % 4001) / 100.0 - 20;
+            double oy = cy + (double)(th_rnd64(&st) % 4001) / 100.0 - 20;
+            double oz = cz + (double)(th_rnd64(&st) % 4001) / 100.0 - 20;
+            /* A target on the quad's plane, in it or just past an edge. */
+            double a = (double)(th_rnd64(&st) % 1201) / 1000.0 - 0.1;
+            double b = (double)(th_rnd64(&st) % 1201) / 1000.0 - 0.1;
+            double tx = cx + a * F2D(o.b.x) + b * F2D(o.c.x);
+            double tz = cz + a * F2D(o.b.z) + b * F2D(o.c.z);
+            rt_ray r = ray(ox, oy, oz, tx - ox, cy - oy + 1e-3, tz - oz);
+            fx_t t1 = 0, t2 = 0;
+            uint8_t p1 = 0, p2 = 0;
+            int h1 = rt_intersect(&o, &r, RT_EPS, FX_MAX, &t1, &p1);
+            int h2 = rt_intersect(&g, &r, RT_EPS, FX_MAX, &t2, &p2);
+            n++;
+            hits += h1;
+            bad += h1 != h2 || (h1 && (t1 != t2 || p1 != p2));
+        }
+    }
+    CHECK_EQ(bad, 0);
+    CHECK(flats[1] > 50 && flats[2] > 50 && hits > 100000);
+    printf("flat quads: %ld rays (%ld hits) on %ld + %ld quads, %ld differ "
+           "from the general path\n", n, hits, flats[1], flats[2], bad);
+}
+
 /* rt_udiv64_32 against the compiler's 64-bit division. */
 static void division(void)
 {
@@ -246,6 +294,7 @@ int main(void)
     division();
     sphere_cases();
     quad_cases();
+    flat_quads();
     box_cases();
     cylinder_cases();
     cone_cases();

@@ -149,6 +149,7 @@ static void put_object(emitter *e, const rt_object *o)
     put_uint(e, "caps", o->caps);
     put_uint(e, "convex", o->convex);
     put_uint(e, "small", o->small);
+    put_uint(e, "flat", o->flat);
     put_vec(e, "a", o->a);
     put_vec(e, "b", o->b);
     put_vec(e, "c", o->c);
