@@ -43,7 +43,7 @@ typedef struct {
     int lower, upper; /* hemispheres of u.y it reaches */
 } cone_box;
 
-/* Largest offset rt_trace gives a shadow ray's origin (see shade()). */
+/* The offset rt_trace gives the origin of a ray leaving o (shade()). */
 static fx_t origin_offset(const rt_object *o)
 {
     if ((o->kind == RT_CYLINDER || o->kind == RT_CONE) && o->ushift > 4)
