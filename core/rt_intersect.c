@@ -44,9 +44,9 @@
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline int bsphere(const fx_vec3 *cp, fx_t r, int small, const rt_ray *ray,
-                   fx_t tmin, fx_t tmax, int64_t *tca, uint64_t *disc,
-                   int64_t h[3])
+static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
+                          const rt_ray *ray, fx_t tmin, fx_t tmax,
+                          int64_t *tca, uint64_t *disc, int64_t h[3])
 {
     const fx_vec3 c = *cp;
     int64_t t;
