@@ -15,6 +15,7 @@ void rt_options_from_scene(rt_options *o, const rt_scene *s)
     o->format = RT_RGB888;
     o->dither = 0;
     o->adaptive = 0;
+    o->trace_all = 0;
 }
 
 size_t rt_row_bytes(const rt_options *o)
@@ -400,6 +401,9 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
     for (unsigned i = 0; i < RT_MAX_LIGHTS; i++)
         blocker[i] = 0xFFFFu;
     tr.blocker = blocker;
+    uint32_t budget = 0;
+    tr.budget = &budget;
+    tr.cut_budget = o->trace_all ? 0 : RT_CUT_BUDGET;
     tr.scene = s;
     tr.max_depth = o->depth;
     tr.feat = rt_scene_features(s, o->spp);

@@ -27,6 +27,11 @@ typedef struct {
                                3x3 neighbourhood of centre samples differs
                                by more than this many 8-bit levels get the
                                spp grid; the rest keep their centre sample */
+    uint8_t trace_all;      /* 0: skip reflected and refracted rays too
+                               faint to move a sample by half an 8-bit
+                               level, all of them together (see
+                               docs/render-model.md). 1: trace every ray to
+                               `depth` */
 } rt_options;
 
 /* Ray and test counters. The renderer adds to them and never resets them,
@@ -37,6 +42,8 @@ typedef struct {
     uint64_t reflection; /* reflection rays, including total internal */
     uint64_t refraction; /* transmitted rays */
     uint64_t tests;      /* ray-object intersection tests */
+    uint64_t cut;        /* reflected and refracted rays left untraced as
+                            too faint (rt_options.trace_all) */
 } rt_stats;
 
 /* Receives finished row y. `row` holds rt_row_bytes() bytes and belongs to

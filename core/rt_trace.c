@@ -158,6 +158,26 @@ static fx_t fx_powi(fx_t x, unsigned n)
 #endif
 
 #if !defined(RT_NO_REFLECTION) || !defined(RT_NO_REFRACTION)
+/* Weight of a ray spawned with coefficient k by a ray of weight w, rounded
+ * up so that it never understates what the ray can add. */
+static fx_t child_weight(fx_t w, fx_t k)
+{
+    return (fx_t)(((int64_t)w * k + 0xFFFF) >> 16);
+}
+
+/* 1 if a ray of weight w at this depth must be traced. If not, its colour
+ * is taken as 0: its bound w B is taken off the sample's budget, so all
+ * the rays a sample skips add up to less than RT_CUT_BUDGET per channel. */
+static int worth_tracing(const rt_tracer *tr, fx_t w, unsigned depth)
+{
+    uint64_t cost = (uint64_t)(uint32_t)w * tr->bound[tr->max_depth - depth];
+    if (cost >= *tr->budget)
+        return 1;
+    *tr->budget -= (uint32_t)cost;
+    RT_COUNT(tr, cut);
+    return 0;
+}
+
 /* Mirror direction d - 2 (d.n) n, renormalised. */
 static fx_vec3 reflect_dir(fx_vec3 d, fx_vec3 n)
 {
@@ -168,7 +188,7 @@ static fx_vec3 reflect_dir(fx_vec3 d, fx_vec3 n)
 
 /* Colour of the hit (object oi, part, distance t) seen along r. */
 static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
-                    uint16_t oi, uint8_t part, fx_t t)
+                    fx_t w, uint16_t oi, uint8_t part, fx_t t)
 {
     const rt_scene *s = tr->scene;
     const rt_object *o = &s->obj[oi];
@@ -277,16 +297,22 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
     }
     if (depth >= tr->max_depth)
         return c;
+#if defined(RT_NO_REFLECTION) && defined(RT_NO_REFRACTION)
+    (void)w;
+#endif
 #if !defined(RT_NO_REFLECTION)
-    if (m->reflect > 0) {
+    fx_t wr = child_weight(w, m->reflect);
+    if (m->reflect > 0 && worth_tracing(tr, wr, depth + 1)) {
         rt_ray rr;
         rt_ray_set(&rr, p_out, reflect_dir(r->d, n));
         RT_COUNT(tr, reflection);
-        rgb_madd(&c, rt_trace(tr, &rr, depth + 1, skip_out, oi), m->reflect);
+        rgb_madd(&c, rt_trace(tr, &rr, depth + 1, wr, skip_out, oi),
+                 m->reflect);
     }
 #endif
 #if !defined(RT_NO_REFRACTION)
-    if (m->transparency > 0) {
+    fx_t wt = child_weight(w, m->transparency);
+    if (m->transparency > 0 && worth_tracing(tr, wt, depth + 1)) {
         fx_t eta = outside ? m->ior_inv : m->ior;
         fx_t cosi = fx_neg(fx_v3_dotn(r->d, n));
         fx_t sin2 = fx_sub(FX_ONE, fx_mul(cosi, cosi));
@@ -295,7 +321,7 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
         if (k < 0) { /* total internal reflection */
             rt_ray_set(&tr2, p_out, reflect_dir(r->d, n));
             RT_COUNT(tr, reflection);
-            rgb_madd(&c, rt_trace(tr, &tr2, depth + 1, skip_out, oi),
+            rgb_madd(&c, rt_trace(tr, &tr2, depth + 1, wt, skip_out, oi),
                      m->transparency);
         } else { /* Snell's law */
             fx_t f = fx_sub(fx_mul(eta, cosi), fx_sqrt(k));
@@ -306,7 +332,7 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
                                                                  : NO_SKIP;
             rt_ray_set(&tr2, fx_v3_madd_unit(p, ng, -off), td);
             RT_COUNT(tr, refraction);
-            rgb_madd(&c, rt_trace(tr, &tr2, depth + 1, skip_in, oi),
+            rgb_madd(&c, rt_trace(tr, &tr2, depth + 1, wt, skip_in, oi),
                      m->transparency);
         }
     }
@@ -315,14 +341,14 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
 }
 
 rt_rgb rt_trace(const rt_tracer *tr, const rt_ray *r, unsigned depth,
-                unsigned skip, unsigned from)
+                fx_t w, unsigned skip, unsigned from)
 {
     fx_t t;
     uint16_t oi = 0;
     uint8_t part = 0;
     if (!nearest(tr, r, skip, from, &t, &oi, &part))
         return tr->scene->background;
-    return shade(tr, r, depth, oi, part, t);
+    return shade(tr, r, depth, w, oi, part, t);
 }
 
 rt_rgb rt_trace_camera(const rt_tracer *tr, const rt_ray *r,
@@ -333,6 +359,7 @@ rt_rgb rt_trace_camera(const rt_tracer *tr, const rt_ray *r,
     uint16_t oi = 0;
     uint8_t part = 0;
     int found = 0;
+    *tr->budget = tr->cut_budget; /* a new sample */
     for (unsigned k = 0; k < n_spans; k++) {
         fx_t ti;
         uint8_t pi;
@@ -348,7 +375,51 @@ rt_rgb rt_trace_camera(const rt_tracer *tr, const rt_ray *r,
     }
     if (!found)
         return s->background;
-    return shade(tr, r, 0, oi, part, best);
+    return shade(tr, r, 0, FX_ONE, oi, part, best);
+}
+
+static fx_t channel(rt_rgb c, unsigned k)
+{
+    return k == 0 ? c.r : (k == 1 ? c.g : c.b);
+}
+
+/* a b / 2^16 rounded up, for a, b >= 0. */
+static int64_t mul_up(int64_t a, int64_t b)
+{
+    return (a * b + 0xFFFF) >> 16;
+}
+
+/* Above every channel of any colour shade() can return before it adds
+ * reflected and refracted light, and of the background (Q16.16). Each
+ * term is rounded up. A highlight is allowed 1/8 more than ks, because
+ * a cosine rounded to just past 1 grows under a high power; 16 ulps per
+ * light cover the rest of shade()'s roundings. */
+static int64_t local_bound(const rt_scene *s)
+{
+    int64_t top = 0;
+    for (unsigned k = 0; k < 3; k++) {
+        if (channel(s->background, k) > top)
+            top = channel(s->background, k);
+        for (unsigned i = 0; i < s->n_materials; i++) {
+            const rt_material *m = &s->mat[i];
+            int64_t base = channel(m->color, k), wl;
+            if (m->texture != RT_TEX_NONE && channel(m->color2, k) > base)
+                base = channel(m->color2, k);
+            wl = (int64_t)FX_ONE - m->reflect - m->transparency;
+            wl = wl < 0 ? 0 : wl;
+            int64_t c = mul_up(mul_up(base, channel(s->ambient, k)),
+                               mul_up(wl, m->ambient));
+            int64_t spec = m->specular + m->specular / 8 + 1;
+            for (unsigned li = 0; li < s->n_lights; li++) {
+                int64_t lc = channel(s->light[li].color, k);
+                c += mul_up(lc, mul_up(mul_up(wl, m->diffuse), base) + spec) +
+                     16;
+            }
+            if (c > top)
+                top = c;
+        }
+    }
+    return top;
 }
 
 void rt_tracer_prepare(rt_tracer *tr)
@@ -364,6 +435,17 @@ void rt_tracer_prepare(rt_tracer *tr)
         tr->amb[i] = c;
         tr->kdl[i] = fx_mul(wl, m->diffuse);
         tr->lit[i] = s->n_lights ? rgb_mul(m->color, s->light[0].color) : c;
+    }
+    /* With k bounces left a ray adds at most kr + kt <= 1 times the
+     * bound for k - 1 (plus two roundings) to its local colour. */
+    int64_t local = local_bound(s), kmax = 0;
+    for (unsigned i = 0; i < s->n_materials; i++)
+        if ((int64_t)s->mat[i].reflect + s->mat[i].transparency > kmax)
+            kmax = (int64_t)s->mat[i].reflect + s->mat[i].transparency;
+    int64_t b = local;
+    for (unsigned k = 0; k <= RT_MAX_DEPTH; k++) {
+        tr->bound[k] = b > INT32_MAX ? (uint32_t)INT32_MAX : (uint32_t)b;
+        b = local + mul_up(kmax, b) + 2;
     }
 #if RT_DIR_GRIDS
     rt_dir_grids_prepare(&tr->grids, s);

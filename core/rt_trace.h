@@ -14,13 +14,22 @@ typedef struct {
     rt_rgb amb[RT_MAX_MATERIALS]; /* untextured: ambient term */
     fx_t kdl[RT_MAX_MATERIALS];   /* wl * kd */
     rt_rgb lit[RT_MAX_MATERIALS]; /* untextured: colour x light 0 */
+    /* bound[k]: no channel of the colour of a ray with k bounces left
+     * reaches it (Q16.16, rounding included). */
+    uint32_t bound[RT_MAX_DEPTH + 1];
+    /* The current sample's allowance for untraced colour (Q32.32): a ray
+     * of weight w and bound B is skipped when w B is below it, and w B is
+     * then taken off. cut_budget is its value at the start of each
+     * sample: RT_CUT_BUDGET, or 0 to trace every ray. */
+    uint32_t *budget;
+    uint32_t cut_budget;
 #if RT_DIR_GRIDS
     rt_dir_grids grids; /* what shadow and secondary rays may hit */
 #endif
 } rt_tracer;
 
-/* Fills the per-material and per-light constants of tr (after tr->scene
- * is set). */
+/* Fills the per-material and per-light constants of tr and the colour
+ * bounds (after tr->scene and tr->max_depth are set). */
 void rt_tracer_prepare(rt_tracer *tr);
 
 #if RT_STATS
@@ -42,12 +51,18 @@ static inline void rt_ray_set(rt_ray *r, fx_vec3 o, fx_vec3 d)
     r->small = (uint8_t)rt_small3(o);
 }
 
-/* Colour seen along r (unclamped). depth counts bounces so far; skip is an
- * object index the ray must ignore (0xFFFF for none); from is the object
- * the ray starts on (0xFFFF for none), whose direction grid may narrow the
- * search. Recursion depth is at most tr->max_depth <= RT_MAX_DEPTH. */
+/* Sample budget for untraced colour: 2^-9 (Q32.32), under half an 8-bit
+ * level (1/510). */
+#define RT_CUT_BUDGET ((uint32_t)1 << 23)
+
+/* Colour seen along r (unclamped). depth counts bounces so far; w is the
+ * ray's weight in its sample (the product of the coefficients along its
+ * path, rounded up); skip is an object index the ray must ignore (0xFFFF
+ * for none); from is the object the ray starts on (0xFFFF for none), whose
+ * direction grid may narrow the search. Recursion depth is at most
+ * tr->max_depth <= RT_MAX_DEPTH. */
 rt_rgb rt_trace(const rt_tracer *tr, const rt_ray *r, unsigned depth,
-                unsigned skip, unsigned from);
+                fx_t w, unsigned skip, unsigned from);
 
 /* Colour seen along camera ray r of pixel column x, testing only the
  * objects whose row span covers x (rt_cull_row). Same result as rt_trace

@@ -103,9 +103,13 @@ cmp -s "$tmp/a.ppm" "$tmp/b.ppm" && ok || bad "-j 2 differs from -j 1"
 expect 0 '' -- "$FT" -q -W 40 -H 30 -o "$tmp/keep.ppm" "$SEED"
 cmp -s "$tmp/a.ppm" "$tmp/keep.ppm" && ok || bad "a good render did not replace the old file"
 expect 0 '^primary_rays 1200$' -- "$FT" -q --stats -W 40 -H 30 -o "$tmp/s.ppm" "$SEED"
-for k in shadow_rays reflection_rays refraction_rays intersection_tests render_seconds pixels; do
+for k in shadow_rays reflection_rays refraction_rays intersection_tests rays_cut render_seconds pixels; do
     grep -q "^$k " "$tmp/err" && ok || bad "--stats lacks $k"
 done
+# The seed's glass has rays too faint to trace; --trace-all traces them.
+grep -qE '^rays_cut [1-9]' "$tmp/err" && ok || bad "the seed cut no rays"
+expect 0 '^rays_cut 0$' -- "$FT" -q --stats --trace-all -W 40 -H 30 -o "$tmp/t.ppm" "$SEED"
+cmp -s "$tmp/s.ppm" "$tmp/t.ppm" && bad "--trace-all rendered the same bytes" || ok
 expect 0 '' -- "$FT" -q -W 40 -H 30 -o "$tmp/a.png" "$SEED"
 head -c 8 "$tmp/a.png" | od -An -tx1 | grep -q '89 50 4e 47 0d 0a 1a 0a' && ok || bad "PNG signature"
 if command -v pngtopnm >/dev/null; then

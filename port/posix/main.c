@@ -44,6 +44,7 @@ typedef struct {
     int stats, quiet, reference, build_flags, emit_c;
     const char *format; /* rgb888 (default), rgb565le, rgb565be */
     int dither;
+    int trace_all;
 } cli;
 
 static void usage(FILE *f)
@@ -77,6 +78,10 @@ static void usage(FILE *f)
 "        --adaptive T    adaptive anti-aliasing: only pixels whose 3x3\n"
 "                        neighbourhood differs by more than T (1..255, in\n"
 "                        8-bit levels) get the full -s grid; needs -s > 1\n"
+"        --trace-all     trace every reflected and refracted ray to the\n"
+"                        depth limit; by default rays too faint to move a\n"
+"                        sample by half an 8-bit level, all of them\n"
+"                        together, are skipped\n"
 "        --reference     render with the double-precision reference\n"
 "        --stats         print ray counters and timing on stderr\n"
 "        --build-flags   print the -DRT_NO_* flags that remove every effect\n"
@@ -176,6 +181,8 @@ static int parse_args(int argc, char **argv, cli *c)
             c->format = val;
         } else if (strcmp(a, "--dither") == 0) {
             c->dither = 1;
+        } else if (strcmp(a, "--trace-all") == 0) {
+            c->trace_all = 1;
         } else if (strcmp(a, "--stats") == 0) {
             c->stats = 1;
         } else if (strcmp(a, "-q") == 0 || strcmp(a, "--quiet") == 0) {
@@ -271,6 +278,7 @@ static void add_stats(rt_stats *a, const rt_stats *b)
     a->reflection += b->reflection;
     a->refraction += b->refraction;
     a->tests += b->tests;
+    a->cut += b->cut;
 }
 
 /* Rows a worker takes at a time: small enough to balance threads, large
@@ -349,6 +357,7 @@ static int render_scene(const cli *c, const rt_scene *scene)
                                                         : RT_RGB888;
     j.opt.dither = (uint8_t)c->dither;
     j.opt.adaptive = (uint8_t)c->adaptive;
+    j.opt.trace_all = (uint8_t)c->trace_all;
     if (c->adaptive && j.opt.spp == 1)
         return cli_error("--adaptive needs more than one sample per pixel; "
                          "%s renders at 1 spp, so add -s 4, 9 or 16",
@@ -443,6 +452,7 @@ static int render_scene(const cli *c, const rt_scene *scene)
                 (unsigned long long)j.stats.refraction);
         fprintf(stderr, "intersection_tests %llu\n",
                 (unsigned long long)j.stats.tests);
+        fprintf(stderr, "rays_cut %llu\n", (unsigned long long)j.stats.cut);
         fprintf(stderr, "render_seconds %.6f\n", secs);
     }
     pthread_mutex_destroy(&j.lock);
