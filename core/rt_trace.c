@@ -289,7 +289,7 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
             /* R = 2 (n.l) n - l; rv = R.v with v = -d. */
             fx_vec3 rl = fx_v3_madd_unit(fx_v3_neg(ld), n, 2 * ndl);
             fx_t rv = fx_neg(fx_v3_dotn(rl, r->d));
-            if (rv > 0)
+            if (rv > tr->spec_min[o->material])
                 rgb_madd(&c, l->color, fx_mul(m->specular,
                                               fx_powi(rv, m->shininess)));
         }
@@ -435,6 +435,20 @@ void rt_tracer_prepare(rt_tracer *tr)
         tr->amb[i] = c;
         tr->kdl[i] = fx_mul(wl, m->diffuse);
         tr->lit[i] = s->n_lights ? rgb_mul(m->color, s->light[0].color) : c;
+#if !defined(RT_NO_SPECULAR)
+        /* ks rv^n rounds up monotonically in rv (each step does), so the
+         * cosines whose highlight is 0 end at one found by bisection; the
+         * test against it skips a power and a product that add 0. */
+        fx_t lo = 0, hi = FX_ONE;
+        while (hi - lo > 1) {
+            fx_t mid = lo + (hi - lo) / 2;
+            if (fx_mul(m->specular, fx_powi(mid, m->shininess)) == 0)
+                lo = mid;
+            else
+                hi = mid;
+        }
+        tr->spec_min[i] = lo;
+#endif
     }
     /* With k bounces left a ray adds at most kr + kt <= 1 times the
      * bound for k - 1 (plus two roundings) to its local colour. */

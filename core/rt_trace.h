@@ -14,6 +14,8 @@ typedef struct {
     rt_rgb amb[RT_MAX_MATERIALS]; /* untextured: ambient term */
     fx_t kdl[RT_MAX_MATERIALS];   /* wl * kd */
     rt_rgb lit[RT_MAX_MATERIALS]; /* untextured: colour x light 0 */
+    /* The largest cosine rv whose highlight ks rv^n rounds to 0. */
+    fx_t spec_min[RT_MAX_MATERIALS];
     /* bound[k]: no channel of the colour of a ray with k bounces left
      * reaches it (Q16.16, rounding included). */
     uint32_t bound[RT_MAX_DEPTH + 1];

@@ -1,10 +1,13 @@
 /*
+ * What the tracer skips.
  * The ray cut-off (rt_options.trace_all = 0) must stay below its budget:
  * - the colour bounds rt_tracer_prepare() derives hold for every ray
  *   traced in full, in random scenes with bright lights, mirrors and
  *   glass;
  * - a render with the cut-off differs from one that traces every ray by
  *   at most one 8-bit level per channel, and it does skip rays.
+ * A highlight is skipped for cosines up to rt_tracer.spec_min: exactly
+ * those whose ks rv^n rounds to 0.
  */
 #include <stdio.h>
 #include <string.h>
@@ -108,6 +111,36 @@ static void random_scene(rt_scene *s, unsigned depth)
         printf("    %s\n", text);
 }
 
+/* ks rv^n as shade() computes it. */
+static fx_t highlight(const rt_material *m, fx_t rv)
+{
+    fx_t r = FX_ONE, x = rv;
+    for (unsigned n = m->shininess; n; n >>= 1) {
+        if (n & 1)
+            r = fx_mul(r, x);
+        if (n > 1)
+            x = fx_mul(x, x);
+    }
+    return fx_mul(m->specular, r);
+}
+
+static void check_spec_min(const rt_tracer *tr, long *checked)
+{
+    const rt_scene *s = tr->scene;
+    for (unsigned i = 0; i < s->n_materials; i++) {
+        fx_t lim = tr->spec_min[i];
+        CHECK(lim >= 0 && lim < FX_ONE);
+        CHECK_EQ(highlight(&s->mat[i], lim), 0);
+        if (lim + 1 < FX_ONE)
+            CHECK(highlight(&s->mat[i], lim + 1) != 0);
+        for (int k = 0; k < 20; k++) { /* and everything below */
+            fx_t rv = (fx_t)(th_rnd64(&rng) % (uint64_t)(lim + 1));
+            CHECK_EQ(highlight(&s->mat[i], rv), 0);
+        }
+        ++*checked;
+    }
+}
+
 static fx_t unit(double x)
 {
     return (fx_t)(x * 65536.0);
@@ -116,7 +149,7 @@ static fx_t unit(double x)
 /* Traces random rays in full and checks each colour against the bound
  * for the bounces the ray has left. Returns the largest colour over its
  * bound, in 1/1000. */
-static long bound_trial(long *rays, long *over)
+static long bound_trial(long *rays, long *over, long *mats)
 {
     static rt_scene s;
     static rt_tracer tr;
@@ -134,6 +167,7 @@ static long bound_trial(long *rays, long *over)
     tr.blocker = blocker;
     tr.budget = &budget; /* 0: every ray is traced */
     rt_tracer_prepare(&tr);
+    check_spec_min(&tr, mats);
     for (int k = 0; k < 300; k++) {
         unsigned d = (unsigned)pick((int)depth + 1);
         fx_vec3 o = fx_v3(unit(uni(-8, 8)), unit(uni(-1, 8)),
@@ -197,9 +231,9 @@ static int render_trial(unsigned long long *cut, long *changed)
 
 int main(void)
 {
-    long rays = 0, over = 0, worst = 0;
+    long rays = 0, over = 0, worst = 0, mats = 0;
     for (int t = 0; t < 300; t++) {
-        long w = bound_trial(&rays, &over);
+        long w = bound_trial(&rays, &over, &mats);
         worst = w > worst ? w : worst;
     }
     CHECK_EQ(over, 0);
@@ -207,6 +241,7 @@ int main(void)
     CHECK(worst > 250);
     printf("colour bounds: %ld rays, %ld over, largest at %.3f of its "
            "bound\n", rays, over, worst / 1000.0);
+    printf("highlight thresholds: %ld materials exact\n", mats);
 
     unsigned long long cut = 0;
     long changed = 0;
