@@ -186,6 +186,19 @@ static fx_vec3 reflect_dir(fx_vec3 d, fx_vec3 n)
 }
 #endif
 
+#if !defined(RT_NO_SHADOWS) || !defined(RT_NO_REFLECTION) || \
+    !defined(RT_NO_REFRACTION)
+/* Moves the hit point *p off the surface by off along the unit normal ng
+ * (towards the ray), once. |off| <= 2^17. */
+static inline void out_point(fx_vec3 *p, int *done, fx_vec3 ng, fx_t off)
+{
+    if (!*done) {
+        *p = fx_v3_madd_unit(*p, ng, off);
+        *done = 1;
+    }
+}
+#endif
+
 /* Colour of the hit (object oi, part, distance t) seen along r. */
 static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
                     fx_t w, uint16_t oi, uint8_t part, fx_t t)
@@ -193,7 +206,9 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
     const rt_scene *s = tr->scene;
     const rt_object *o = &s->obj[oi];
     const rt_material *m = &s->mat[o->material];
-    fx_vec3 p = fx_v3_madd(r->o, r->d, t);
+    /* d is a unit vector: below 16384 units the cheaper form is exact. */
+    fx_vec3 p = t <= ((fx_t)1 << 30) ? fx_v3_madd_unit(r->o, r->d, t)
+                                     : fx_v3_madd(r->o, r->d, t);
     const fx_vec3 ng_out = rt_normal(o, p, part);
     fx_vec3 ng = ng_out;
     int outside = o->kind == RT_QUAD || fx_v3_dot_q32(r->d, ng) <= 0;
@@ -217,11 +232,14 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
     fx_t off = RT_EPS;
     if ((o->kind == RT_CYLINDER || o->kind == RT_CONE) && o->ushift > 4)
         off = (fx_t)1 << (o->ushift + 2);
-    fx_vec3 p_out = fx_v3_madd_unit(p, ng, off); /* off <= 2^17 */
+    /* Where rays leaving on the ray's side start: made on first use, as
+     * many hits cast no ray at all. */
+    fx_vec3 p_out = p;
+    int have_out = 0;
     unsigned skip_out = (o->convex && outside) ? oi : NO_SKIP;
 #if defined(RT_NO_SHADOWS) && defined(RT_NO_REFLECTION) && \
     defined(RT_NO_REFRACTION)
-    (void)p_out, (void)skip_out; /* no secondary rays in this build */
+    (void)p_out, (void)have_out, (void)skip_out; /* no secondary rays */
 #endif
     rt_rgb c;
     fx_t kdl = tr->kdl[o->material];
@@ -267,6 +285,7 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
             RT_COUNT(tr, shadow);
             if (any) {
                 rt_ray sr;
+                out_point(&p_out, &have_out, ng, off);
                 rt_ray_set(&sr, p_out, ld);
                 /* |lv| = lv . norm(lv): a bounded dot product instead of
                  * a second square root; its error (~1e-5 |lv|) only moves
@@ -304,6 +323,7 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
     fx_t wr = child_weight(w, m->reflect);
     if (m->reflect > 0 && worth_tracing(tr, wr, depth + 1)) {
         rt_ray rr;
+        out_point(&p_out, &have_out, ng, off);
         rt_ray_set(&rr, p_out, reflect_dir(r->d, n));
         RT_COUNT(tr, reflection);
         rgb_madd(&c, rt_trace(tr, &rr, depth + 1, wr, skip_out, oi),
@@ -319,6 +339,7 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
         fx_t k = fx_sub(FX_ONE, fx_mul(fx_mul(eta, eta), sin2));
         rt_ray tr2;
         if (k < 0) { /* total internal reflection */
+            out_point(&p_out, &have_out, ng, off);
             rt_ray_set(&tr2, p_out, reflect_dir(r->d, n));
             RT_COUNT(tr, reflection);
             rgb_madd(&c, rt_trace(tr, &tr2, depth + 1, wt, skip_out, oi),
