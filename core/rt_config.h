@@ -74,8 +74,9 @@
 
 /* Shadow rays, and rays leaving a reflective or transparent object, test
  * only the objects listed for their direction on an N x N grid per
- * hemisphere (rt_dirgrid.c). 0: every such ray tests every object. The
- * image is the same either way. */
+ * hemisphere (rt_dirgrid.c); rays inside closed glass that nothing else
+ * reaches into test only it (rt_trace.h RT_SEALED). 0: every such ray
+ * tests every object. The image is the same either way. */
 #ifndef RT_DIR_GRID
 #define RT_DIR_GRID 8
 #endif

@@ -4,6 +4,7 @@
  * reflection and refraction with total internal reflection. Recursion is
  * capped by RT_MAX_DEPTH at compile time and by the caller's depth.
  */
+#include "rt_libc.h"
 #include "rt_trace.h"
 
 #define NO_SKIP 0xFFFFu
@@ -46,6 +47,14 @@ static rt_rgb rgb_mul(rt_rgb a, rt_rgb b)
 }
 
 
+#if RT_SEALED
+/* Bit i of a set over objects. */
+static int has(const uint32_t *set, unsigned i)
+{
+    return (int)((set[i / 32] >> (i % 32)) & 1u);
+}
+#endif
+
 /* Tests object i for a nearer hit than *best. */
 static void try_nearest(const rt_tracer *tr, const rt_ray *r, unsigned i,
                         fx_t *best, uint16_t *obj, uint8_t *part)
@@ -68,6 +77,15 @@ static int nearest(const rt_tracer *tr, const rt_ray *r, unsigned skip,
 {
     const rt_scene *s = tr->scene;
     fx_t best = FX_MAX;
+#if RT_SEALED
+    /* A closed convex object skips itself exactly for rays leaving its
+     * outside, so this ray runs inside `from`. */
+    if (skip == NO_SKIP && from < s->n_objects && has(tr->alone, from)) {
+        try_nearest(tr, r, from, &best, obj, part);
+        *t = best;
+        return best != FX_MAX;
+    }
+#endif
 #if RT_DIR_GRIDS
     const rt_dir_grids *gs = &tr->grids;
     if (from < s->n_objects && gs->from[from] != RT_DIR_NONE) {
@@ -262,7 +280,13 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
 #else
     const unsigned n_lights = s->n_lights;
 #endif
-    for (unsigned li = 0; li < n_lights; li++) {
+#if RT_SEALED
+    /* Inside a closed object every light outside it is hidden. */
+    const int dark = !outside && has(tr->dark, oi);
+#else
+    const int dark = 0;
+#endif
+    for (unsigned li = 0; !dark && li < n_lights; li++) {
         const rt_light *l = &s->light[li];
         fx_vec3 lv = fx_v3_sub(l->pos, p);
         fx_vec3 ld = fx_v3_normalize(lv);
@@ -399,6 +423,57 @@ rt_rgb rt_trace_camera(const rt_tracer *tr, const rt_ray *r,
     return shade(tr, r, 0, FX_ONE, oi, part, best);
 }
 
+#if RT_SEALED
+/* 1 if the sphere (c, r) holds no point within d of p: |p - c| > r + d,
+ * decided conservatively (distance rounded down, radii up). */
+static int apart(fx_vec3 p, fx_vec3 c, fx_t r, fx_t d)
+{
+    int64_t lim = (int64_t)r + d; /* < 2^32 */
+    int64_t dx = (int64_t)p.x - c.x, dy = (int64_t)p.y - c.y;
+    int64_t dz = (int64_t)p.z - c.z;
+    dx = dx < 0 ? -dx : dx;
+    dy = dy < 0 ? -dy : dy;
+    dz = dz < 0 ? -dz : dz;
+    if (dx > lim || dy > lim || dz > lim)
+        return 1;
+    /* Every term is now below 2^32; 2 bits less keep the sum in 64. */
+    uint64_t ux = (uint64_t)dx >> 2, uy = (uint64_t)dy >> 2;
+    uint64_t uz = (uint64_t)dz >> 2, ul = ((uint64_t)lim + 3) >> 2;
+    return ux * ux + uy * uy + uz * uz > ul * ul;
+}
+
+static int closed(const rt_object *o)
+{
+    return o->kind == RT_SPHERE || o->kind == RT_BOX ||
+           (o->kind == RT_CYLINDER &&
+            o->caps == (RT_CAP_BOTTOM | RT_CAP_TOP)) ||
+           (o->kind == RT_CONE && (o->caps & RT_CAP_BOTTOM));
+}
+
+/* tr->alone and tr->dark, for the objects rays can enter (transparent
+ * ones): inside rays come only from refraction. */
+static void find_sealed(rt_tracer *tr)
+{
+    const rt_scene *s = tr->scene;
+    memset(tr->alone, 0, sizeof tr->alone);
+    memset(tr->dark, 0, sizeof tr->dark);
+    for (unsigned i = 0; i < s->n_objects; i++) {
+        const rt_object *o = &s->obj[i];
+        if (!closed(o) || s->mat[o->material].transparency == 0)
+            continue;
+        int alone = 1, dark = (tr->feat & RT_FEAT_SHADOWS) != 0;
+        for (unsigned j = 0; alone && j < s->n_objects; j++)
+            if (j != i && !apart(s->obj[j].bc, o->bc, o->br, s->obj[j].br))
+                alone = 0;
+        for (unsigned li = 0; dark && li < s->n_lights; li++)
+            if (!apart(s->light[li].pos, o->bc, o->br, 0))
+                dark = 0;
+        tr->alone[i / 32] |= (uint32_t)alone << (i % 32);
+        tr->dark[i / 32] |= (uint32_t)dark << (i % 32);
+    }
+}
+#endif
+
 static fx_t channel(rt_rgb c, unsigned k)
 {
     return k == 0 ? c.r : (k == 1 ? c.g : c.b);
@@ -482,6 +557,9 @@ void rt_tracer_prepare(rt_tracer *tr)
         tr->bound[k] = b > INT32_MAX ? (uint32_t)INT32_MAX : (uint32_t)b;
         b = local + mul_up(kmax, b) + 2;
     }
+#if RT_SEALED
+    find_sealed(tr);
+#endif
 #if RT_DIR_GRIDS
     rt_dir_grids_prepare(&tr->grids, s);
 #endif

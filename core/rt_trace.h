@@ -5,6 +5,14 @@
 #include "rt_cull.h"
 #include "rt_dirgrid.h"
 
+/* Culling for closed glass (rt_tracer.alone and .dark), off with the
+ * direction grids (RT_DIR_GRID 0) so that suite_cull compares it too. */
+#if RT_DIR_GRIDS && !defined(RT_NO_REFRACTION)
+#define RT_SEALED 1
+#else
+#define RT_SEALED 0
+#endif
+
 typedef struct {
     const rt_scene *scene;
     unsigned max_depth; /* <= RT_MAX_DEPTH */
@@ -14,6 +22,15 @@ typedef struct {
     rt_rgb amb[RT_MAX_MATERIALS]; /* untextured: ambient term */
     fx_t kdl[RT_MAX_MATERIALS];   /* wl * kd */
     rt_rgb lit[RT_MAX_MATERIALS]; /* untextured: colour x light 0 */
+#if RT_SEALED
+    /* Bit sets over objects. alone: closed convex (a sphere, a box, a
+     * capped cylinder or cone) whose bounding sphere no other object's
+     * meets, so a ray inside it can hit only it. dark: closed convex with
+     * every light outside its bounding sphere and shadows on, so no light
+     * reaches its inside. */
+    uint32_t alone[(RT_MAX_OBJECTS + 31) / 32];
+    uint32_t dark[(RT_MAX_OBJECTS + 31) / 32];
+#endif
     /* The largest cosine rv whose highlight ks rv^n rounds to 0. */
     fx_t spec_min[RT_MAX_MATERIALS];
     /* bound[k]: no channel of the colour of a ray with k bounces left

@@ -3,8 +3,8 @@
 # rays (the direction grids, core/rt_dirgrid.c) must never change a pixel:
 # random scenes with tiny, huge, near and far objects, reflective and
 # glass materials, random cameras and one to three lights anywhere
-# (inside objects too) render the same bytes in the normal build
-# and with RT_CULL=0 RT_DIR_GRID=0.
+# (inside objects too, and in closed glass in view) render the same bytes
+# in the normal build and with RT_CULL=0 RT_DIR_GRID=0.
 set -u
 cd "$(dirname "$0")/.."
 FT=${FIXTRACE:-build/posix/fixtrace}
@@ -31,6 +31,13 @@ for seed in $(seq 1 150); do
                    rand() * 50 - 5, rand() * 200 - 40;
         print "material m color 0.8 0.5 0.3 reflect 0.3";
         print "material g color 1 1 1 transparency 0.8 ior 1.3";
+        if (rand() < 0.3) { # a light in view, inside closed glass
+            lx = rand() * 4 - 2; ly = 1 + rand() * 3; lz = rand() * 10;
+            printf "light %.3f %.3f %.3f color 0.5 0.5 0.5\n", lx, ly, lz;
+            r = 0.5 + rand() * 2;
+            if (rand() < 0.5) printf "sphere center %.3f %.3f %.3f radius %.3f material g\n", lx, ly + r / 3, lz, r;
+            else printf "box min %.3f %.3f %.3f max %.3f %.3f %.3f material g\n", lx - r, ly - r / 2, lz - r, lx + r / 2, ly + r, lz + r;
+        }
         print "quad corner -30 0 -30 edge1 0 0 60 edge2 60 0 0 material m";
         n = 3 + int(rand() * 12);
         for (i = 0; i < n; i++) {
