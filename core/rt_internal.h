@@ -52,8 +52,9 @@ int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
 /* Outward unit normal of o at surface point p on the given part. */
 fx_vec3 rt_normal(const rt_object *o, fx_vec3 p, uint8_t part);
 
-/* Texture colour of material m on object o at point p. */
-rt_rgb rt_texel(const rt_material *m, const rt_object *o, fx_vec3 p);
+/* Which of material m's colours its texture shows on object o at point p:
+ * 0 for m->color (and for no texture), 1 for m->color2. */
+unsigned rt_texel(const rt_material *m, const rt_object *o, fx_vec3 p);
 
 /* Bump-perturbed unit normal (m->bump != 0). */
 fx_vec3 rt_bump(const rt_material *m, const rt_object *o, fx_vec3 p,

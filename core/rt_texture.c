@@ -7,7 +7,7 @@ static fx_vec3 local_point(const rt_object *o, fx_vec3 p)
     return fx_v3_sub(p, o->a);
 }
 
-rt_rgb rt_texel(const rt_material *m, const rt_object *o, fx_vec3 p)
+unsigned rt_texel(const rt_material *m, const rt_object *o, fx_vec3 p)
 {
     fx_vec3 q = local_point(o, p);
     int32_t idx;
@@ -27,9 +27,9 @@ rt_rgb rt_texel(const rt_material *m, const rt_object *o, fx_vec3 p)
               fx_floor_int(fx_mul(q.z, m->tex_inv));
         break;
     default:
-        return m->color;
+        return 0;
     }
-    return (idx & 1) ? m->color2 : m->color;
+    return (unsigned)idx & 1u;
 }
 
 /* Lattice value in [-1, 1): the integer hash of docs/render-model.md,

@@ -237,11 +237,12 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
     if (m->bump != 0)
         n = rt_bump(m, o, p, ng);
 #endif
-    rt_rgb base = m->color;
+    unsigned tex = 0; /* which colour: m->color, or color2 */
 #if !defined(RT_NO_TEXTURES)
     if (m->texture != RT_TEX_NONE) /* read inside: see render-model.md */
-        base = rt_texel(m, o, fx_v3_madd_unit(p, ng_out, -RT_EPS));
+        tex = rt_texel(m, o, fx_v3_madd_unit(p, ng_out, -RT_EPS));
 #endif
+    const rt_rgb base = tex ? m->color2 : m->color;
     /* Cylinders and cones are solved in a frame whose unit is 2^ushift
      * ulps, so a secondary ray's root on its own surface is off by about
      * that much over the cosine of its angle to the surface. Starting it
@@ -259,22 +260,8 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
     defined(RT_NO_REFRACTION)
     (void)p_out, (void)have_out, (void)skip_out; /* no secondary rays */
 #endif
-    rt_rgb c;
+    rt_rgb c = tr->amb[o->material][tex];
     fx_t kdl = tr->kdl[o->material];
-#if defined(RT_NO_TEXTURES)
-    const int plain = 1;
-#else
-    const int plain = m->texture == RT_TEX_NONE;
-#endif
-    if (plain) {
-        c = tr->amb[o->material];
-    } else {
-        fx_t wl = fx_sub(fx_sub(FX_ONE, m->reflect), m->transparency);
-        if (wl < 0)
-            wl = 0;
-        c = rgb(0, 0, 0);
-        rgb_madd(&c, rgb_mul(base, s->ambient), fx_mul(wl, m->ambient));
-    }
 #if defined(RT_NO_MULTILIGHT)
     const unsigned n_lights = s->n_lights ? 1 : 0; /* checked at start */
 #else
@@ -322,8 +309,8 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
         }
 #endif
         rt_rgb lc;
-        if (plain && li == 0)
-            lc = tr->lit[o->material];
+        if (li == 0)
+            lc = tr->lit[o->material][tex];
         else
             lc = rgb_mul(base, l->color);
         rgb_madd(&c, lc, fx_mul(kdl, ndl));
@@ -526,11 +513,14 @@ void rt_tracer_prepare(rt_tracer *tr)
         fx_t wl = fx_sub(fx_sub(FX_ONE, m->reflect), m->transparency);
         if (wl < 0)
             wl = 0;
-        rt_rgb c = rgb(0, 0, 0);
-        rgb_madd(&c, rgb_mul(m->color, s->ambient), fx_mul(wl, m->ambient));
-        tr->amb[i] = c;
+        for (unsigned k = 0; k < 2; k++) {
+            rt_rgb base = k ? m->color2 : m->color, c = rgb(0, 0, 0);
+            rgb_madd(&c, rgb_mul(base, s->ambient), fx_mul(wl, m->ambient));
+            tr->amb[i][k] = c;
+            tr->lit[i][k] =
+                s->n_lights ? rgb_mul(base, s->light[0].color) : c;
+        }
         tr->kdl[i] = fx_mul(wl, m->diffuse);
-        tr->lit[i] = s->n_lights ? rgb_mul(m->color, s->light[0].color) : c;
 #if !defined(RT_NO_SPECULAR)
         /* ks rv^n rounds up monotonically in rv (each step does), so the
          * cosines whose highlight is 0 end at one found by bisection; the

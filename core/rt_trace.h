@@ -19,9 +19,10 @@ typedef struct {
     uint32_t feat;      /* RT_FEAT_* of the scene */
     rt_stats *stats;    /* may be NULL */
     uint16_t *blocker;  /* per light: the object that last blocked it */
-    rt_rgb amb[RT_MAX_MATERIALS]; /* untextured: ambient term */
-    fx_t kdl[RT_MAX_MATERIALS];   /* wl * kd */
-    rt_rgb lit[RT_MAX_MATERIALS]; /* untextured: colour x light 0 */
+    /* Per material and texture colour (0: color, 1: color2): */
+    rt_rgb amb[RT_MAX_MATERIALS][2]; /* ambient term */
+    rt_rgb lit[RT_MAX_MATERIALS][2]; /* colour x light 0 */
+    fx_t kdl[RT_MAX_MATERIALS];      /* wl * kd */
 #if RT_SEALED
     /* Bit sets over objects. alone: closed convex (a sphere, a box, a
      * capped cylinder or cone) whose bounding sphere no other object's
