@@ -37,6 +37,10 @@
 /* Narrowest gridded range of u.x or u.z: keeps the cell scale in range. */
 #define MIN_SPAN ((fx_t)1 << 8)
 
+/* A cone box wider than this in u.x or u.z (a quarter of the square) does
+ * not widen the gridded range: it is listed outside the range instead. */
+#define WIDE FX_ONE
+
 typedef struct {
     int all;        /* 1: every cell (the light is inside, or too far) */
     fx_t lo_x, hi_x, lo_z, hi_z;
@@ -105,8 +109,10 @@ void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
                          const rt_scene *s, fx_vec3 lp, fx_t radius)
 {
     const unsigned n = s->n_objects;
-    memset(cell, 0, (size_t)2 * N * N * words * sizeof *cell);
+    uint32_t *out = cell + (size_t)2 * N * N * words;
+    memset(cell, 0, (size_t)RT_DIR_SETS * words * sizeof *cell);
     g->cell = cell;
+    g->outside = 0;
     /* The farthest any hit lies from the centre, and the largest origin
      * offset: they bound how far a ray strays from its ideal copy. */
     int64_t far = 0;
@@ -124,20 +130,25 @@ void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
                  ((far + radius + off_max) >> 12) + FX_ONE / 256;
     fx_t slack = sl > FAR_LIMIT ? FAR_LIMIT : (fx_t)sl;
 
+    /* The range: the narrow cones' boxes, or every box if none is. */
     fx_t x0 = FX_ONE, x1 = -FX_ONE, z0 = FX_ONE, z1 = -FX_ONE;
-    for (unsigned i = 0; i < n; i++) {
-        cone_box b;
-        cone_of(&b, &s->obj[i], lp, slack);
-        if (b.all) {
-            x0 = z0 = -FX_ONE;
-            x1 = z1 = FX_ONE;
-        } else {
-            x0 = b.lo_x < x0 ? b.lo_x : x0;
-            x1 = b.hi_x > x1 ? b.hi_x : x1;
-            z0 = b.lo_z < z0 ? b.lo_z : z0;
-            z1 = b.hi_z > z1 ? b.hi_z : z1;
+    for (int pass = 0; pass < 2 && x0 > x1; pass++)
+        for (unsigned i = 0; i < n; i++) {
+            cone_box b;
+            cone_of(&b, &s->obj[i], lp, slack);
+            if (pass == 0 && (b.all || b.hi_x - b.lo_x > WIDE ||
+                              b.hi_z - b.lo_z > WIDE))
+                continue;
+            if (b.all) {
+                x0 = z0 = -FX_ONE;
+                x1 = z1 = FX_ONE;
+            } else {
+                x0 = b.lo_x < x0 ? b.lo_x : x0;
+                x1 = b.hi_x > x1 ? b.hi_x : x1;
+                z0 = b.lo_z < z0 ? b.lo_z : z0;
+                z1 = b.hi_z > z1 ? b.hi_z : z1;
+            }
         }
-    }
     if (n == 0) { /* nothing to hit: an empty range */
         g->x0 = g->z0 = FX_ONE;
         g->x1 = g->z1 = -FX_ONE;
@@ -169,6 +180,11 @@ void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
             upper = b.upper;
         }
         const uint32_t bit = (uint32_t)1 << (i % 32);
+        if (b.all || b.lo_x < x0 || b.hi_x > x1 || b.lo_z < z0 ||
+            b.hi_z > z1) {
+            out[i / 32] |= bit; /* it reaches outside the range */
+            g->outside = out;
+        }
         for (unsigned iz = iz0; iz <= iz1; iz++)
             for (unsigned ix = ix0; ix <= ix1; ix++) {
                 if (lower)
@@ -183,7 +199,7 @@ void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
 static uint8_t add_grid(rt_dir_grids *gs, unsigned *used, unsigned *next,
                         const rt_scene *s, fx_vec3 centre, fx_t radius)
 {
-    const unsigned size = 2u * N * N * gs->words;
+    const unsigned size = RT_DIR_SETS * gs->words;
     if (*used >= RT_DIR_MAX_GRIDS || *next + size > RT_DIR_POOL_WORDS)
         return RT_DIR_NONE;
     rt_dir_grid_prepare(&gs->grid[*used], gs->pool + *next, gs->words, s,

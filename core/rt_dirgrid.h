@@ -18,14 +18,22 @@
 
 #define RT_DIR_NONE 0xFFu /* no grid: test every object */
 
+/* Bit sets in one grid: two hemispheres of cells, and the outside. */
+#define RT_DIR_SETS (2 * RT_DIR_GRID * RT_DIR_GRID + 1)
+
 /* Directions u from a ball (a light, or an object rays leave from), on a
  * grid over (u.x, u.z) per hemisphere of u.y: each cell lists the objects
- * a ray starting in the ball with a direction in the cell can hit. */
+ * a ray starting in the ball with a direction in the cell can hit. The
+ * grid spans the directions of the objects that subtend a small angle;
+ * those that subtend a wide one (a floor under a light) are also listed
+ * for every direction outside it. */
 typedef struct {
-    fx_t x0, z0;          /* lower corner of the gridded (u.x, u.z) */
-    fx_t x1, z1;          /* upper corner; outside it nothing can be hit */
-    fx_t sx, sz;          /* cells per unit of u.x and u.z (Q16.16) */
-    const uint32_t *cell; /* 2 RT_DIR_GRID^2 bit sets, hemisphere first */
+    fx_t x0, z0;             /* lower corner of the gridded (u.x, u.z) */
+    fx_t x1, z1;             /* upper corner */
+    fx_t sx, sz;             /* cells per unit of u.x and u.z (Q16.16) */
+    const uint32_t *cell;    /* 2 RT_DIR_GRID^2 bit sets, hemisphere first */
+    const uint32_t *outside; /* the set outside the corners, or NULL when
+                                nothing can be hit there */
 } rt_dir_grid;
 
 /* Every grid of one render, in the caller's (the tracer's) memory. */
@@ -42,7 +50,7 @@ typedef struct {
  * get RT_DIR_NONE. */
 void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s);
 
-/* Fills g (its bit sets at cell, 2 RT_DIR_GRID^2 * words words) with the
+/* Fills g (its bit sets at cell, RT_DIR_SETS * words words) with the
  * objects of s a ray from within radius of centre can hit. */
 void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
                          const rt_scene *s, fx_vec3 centre, fx_t radius);
@@ -53,7 +61,7 @@ static inline const uint32_t *rt_dir_cell(const rt_dir_grid *g, fx_t ux,
                                           fx_t uy, fx_t uz, unsigned words)
 {
     if (ux < g->x0 || ux > g->x1 || uz < g->z0 || uz > g->z1)
-        return 0;
+        return g->outside;
     /* (u - x0) * sx is below 2^18 * 2^28: the cell is the high word. */
     uint32_t ix = (uint32_t)(((int64_t)(ux - g->x0) * g->sx) >> 32);
     uint32_t iz = (uint32_t)(((int64_t)(uz - g->z0) * g->sz) >> 32);
