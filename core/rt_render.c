@@ -222,6 +222,23 @@ static void row_setup(row_spans *rs, const rt_tracer *tr, const cam_frame *cf,
     }
 }
 
+/* The sample at screen offset k (cam_offset) along the row whose centre
+ * direction is base, in pixel column x. */
+static rt_rgb sample(const rt_tracer *tr, const cam_frame *cf,
+                     const row_spans *rs, fx_vec3 base, int32_t k,
+                     unsigned x)
+{
+    const fx_t lim = (fx_t)1 << 30; /* fx_v3_madd_unit's range */
+    fx_t sx = cam_offset(cf, k);
+    /* right is a unit vector: the cheaper madd gives the same values. */
+    fx_vec3 d = sx >= -lim && sx <= lim ? fx_v3_madd_unit(base, cf->right, sx)
+                                        : fx_v3_madd(base, cf->right, sx);
+    rt_ray r;
+    rt_ray_set(&r, tr->scene->cam.eye, fx_v3_normalize(d));
+    RT_COUNT(tr, primary);
+    return rt_trace_camera(tr, &r, rs->span, rs->count, x);
+}
+
 /* One pixel: the mean of its n x n samples (cf->n), rounded to 8 bits. */
 static void pixel(const rt_tracer *tr, const cam_frame *cf,
                   const row_spans *rs, const rt_options *o, unsigned x,
@@ -233,6 +250,19 @@ static void pixel(const rt_tracer *tr, const cam_frame *cf,
     /* At most 16 samples of at most 2^16 each: 32 bits hold the sum. */
     uint32_t sum[3] = { 0, 0, 0 };
     const int covered = (int32_t)x >= rs->lo && (int32_t)x <= rs->hi;
+    if (n == 1) { /* the common case, without the loops and the mean */
+        rt_rgb c = tr->scene->background;
+        if (covered)
+            c = sample(tr, cf, rs, rs->base[0], (int32_t)(2 * x + 1) - wn, x);
+#if RT_STATS
+        else if (tr->stats)
+            tr->stats->primary++;
+#endif
+        rgb8[0] = fx_to_u8(c.r); /* it clamps as clamp01 does */
+        rgb8[1] = fx_to_u8(c.g);
+        rgb8[2] = fx_to_u8(c.b);
+        return;
+    }
     if (!covered) {
         /* No object can be hit: every sample sees the background, and
          * needs no ray (rt_trace_camera would return the background). */
@@ -248,12 +278,8 @@ static void pixel(const rt_tracer *tr, const cam_frame *cf,
     for (unsigned j = 0; covered && j < n; j++) {
         fx_vec3 base = rs->base[j];
         for (unsigned i = 0; i < n; i++) {
-            fx_t sx = cam_offset(cf, (int32_t)(2 * x * n + 2 * i + 1) - wn);
-            rt_ray r;
-            rt_ray_set(&r, tr->scene->cam.eye,
-                       fx_v3_normalize(fx_v3_madd(base, cf->right, sx)));
-            RT_COUNT(tr, primary);
-            rt_rgb c = rt_trace_camera(tr, &r, rs->span, rs->count, x);
+            rt_rgb c = sample(tr, cf, rs, base,
+                              (int32_t)(2 * x * n + 2 * i + 1) - wn, x);
             sum[0] += (uint32_t)clamp01(c.r);
             sum[1] += (uint32_t)clamp01(c.g);
             sum[2] += (uint32_t)clamp01(c.b);
