@@ -130,9 +130,11 @@ void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
                  ((far + radius + off_max) >> 12) + FX_ONE / 256;
     fx_t slack = sl > FAR_LIMIT ? FAR_LIMIT : (fx_t)sl;
 
-    /* The range: the narrow cones' boxes, or every box if none is. */
+    /* The range: the narrow cones' boxes, or every box if none is. Only
+     * for a light: rays leaving an object's ball go every way, and there
+     * the wide cones outside the range would be tested for all of them. */
     fx_t x0 = FX_ONE, x1 = -FX_ONE, z0 = FX_ONE, z1 = -FX_ONE;
-    for (int pass = 0; pass < 2 && x0 > x1; pass++)
+    for (int pass = radius > 0; pass < 2 && x0 > x1; pass++)
         for (unsigned i = 0; i < n; i++) {
             cone_box b;
             cone_of(&b, &s->obj[i], lp, slack);

@@ -23,10 +23,10 @@
 
 /* Directions u from a ball (a light, or an object rays leave from), on a
  * grid over (u.x, u.z) per hemisphere of u.y: each cell lists the objects
- * a ray starting in the ball with a direction in the cell can hit. The
- * grid spans the directions of the objects that subtend a small angle;
- * those that subtend a wide one (a floor under a light) are also listed
- * for every direction outside it. */
+ * a ray starting in the ball with a direction in the cell can hit. A
+ * light's grid spans the directions of the objects that subtend a small
+ * angle; those that subtend a wide one (a floor under the light) are also
+ * listed for every direction outside it. */
 typedef struct {
     fx_t x0, z0;             /* lower corner of the gridded (u.x, u.z) */
     fx_t x1, z1;             /* upper corner */
