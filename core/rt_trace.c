@@ -113,6 +113,23 @@ static int nearest(const rt_tracer *tr, const rt_ray *r, unsigned skip,
 }
 
 #if !defined(RT_NO_SHADOWS)
+#if RT_DIR_GRIDS
+/* 1 if the bit set cand (NULL: empty) lists an object other than skip:
+ * a shadow ray from a floor point often has only the floor to test. */
+static int listed_besides(const uint32_t *cand, unsigned words,
+                          unsigned skip)
+{
+    for (unsigned w = 0; cand && w < words; w++) {
+        uint32_t m = cand[w];
+        if (skip / 32 == w)
+            m &= ~((uint32_t)1 << (skip % 32));
+        if (m)
+            return 1;
+    }
+    return 0;
+}
+#endif
+
 /* Tests object i for a blocker of shadow ray r; remembers it. */
 static int blocks(const rt_tracer *tr, const rt_ray *r, fx_t tmax,
                   unsigned i, unsigned light)
@@ -290,7 +307,7 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
                 /* Seen from the light, the ray runs along -ld. */
                 cand = rt_dir_cell(&gs->grid[gs->light[li]], -ld.x, -ld.y,
                                    -ld.z, gs->words);
-                any = cand != 0;
+                any = listed_besides(cand, gs->words, skip_out);
             }
 #endif
             RT_COUNT(tr, shadow);
