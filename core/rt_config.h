@@ -88,16 +88,15 @@
 #endif
 
 /* Stack for the grids' bit sets, in 32-bit words: one grid takes
- * (2 N^2 + 1) ceil(objects / 32) words (129 for N = 8 and up to 32
- * objects). Default: RT_DIR_MAX_GRIDS grids at full capacity, at most
- * 4 KB. */
+ * 2 N^2 ceil(objects / 32) words (128 for N = 8 and up to 32 objects).
+ * Default: RT_DIR_MAX_GRIDS grids at full capacity, at most 4 KB. */
 #ifndef RT_DIR_POOL_WORDS
-#if RT_DIR_MAX_GRIDS * (2 * RT_DIR_GRID * RT_DIR_GRID + 1) * \
+#if RT_DIR_MAX_GRIDS * 2 * RT_DIR_GRID * RT_DIR_GRID * \
         ((RT_MAX_OBJECTS + 31) / 32) > 1024
 #define RT_DIR_POOL_WORDS 1024
 #else
 #define RT_DIR_POOL_WORDS                                                     \
-    (RT_DIR_MAX_GRIDS * (2 * RT_DIR_GRID * RT_DIR_GRID + 1) *                 \
+    (RT_DIR_MAX_GRIDS * 2 * RT_DIR_GRID * RT_DIR_GRID *                       \
      ((RT_MAX_OBJECTS + 31) / 32))
 #endif
 #endif

@@ -109,8 +109,9 @@ void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
                          const rt_scene *s, fx_vec3 lp, fx_t radius)
 {
     const unsigned n = s->n_objects;
-    uint32_t *out = cell + (size_t)2 * N * N * words;
-    memset(cell, 0, (size_t)RT_DIR_SETS * words * sizeof *cell);
+    uint32_t *out = g->out;
+    memset(cell, 0, (size_t)2 * N * N * words * sizeof *cell);
+    memset(out, 0, sizeof g->out);
     g->cell = cell;
     g->outside = 0;
     /* The farthest any hit lies from the centre, and the largest origin
@@ -201,7 +202,7 @@ void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
 static uint8_t add_grid(rt_dir_grids *gs, unsigned *used, unsigned *next,
                         const rt_scene *s, fx_vec3 centre, fx_t radius)
 {
-    const unsigned size = RT_DIR_SETS * gs->words;
+    const unsigned size = 2u * N * N * gs->words;
     if (*used >= RT_DIR_MAX_GRIDS || *next + size > RT_DIR_POOL_WORDS)
         return RT_DIR_NONE;
     rt_dir_grid_prepare(&gs->grid[*used], gs->pool + *next, gs->words, s,

@@ -18,9 +18,6 @@
 
 #define RT_DIR_NONE 0xFFu /* no grid: test every object */
 
-/* Bit sets in one grid: two hemispheres of cells, and the outside. */
-#define RT_DIR_SETS (2 * RT_DIR_GRID * RT_DIR_GRID + 1)
-
 /* Directions u from a ball (a light, or an object rays leave from), on a
  * grid over (u.x, u.z) per hemisphere of u.y: each cell lists the objects
  * a ray starting in the ball with a direction in the cell can hit. A
@@ -32,8 +29,9 @@ typedef struct {
     fx_t x1, z1;             /* upper corner */
     fx_t sx, sz;             /* cells per unit of u.x and u.z (Q16.16) */
     const uint32_t *cell;    /* 2 RT_DIR_GRID^2 bit sets, hemisphere first */
-    const uint32_t *outside; /* the set outside the corners, or NULL when
-                                nothing can be hit there */
+    const uint32_t *outside; /* out, or NULL when nothing can be hit
+                                outside the corners */
+    uint32_t out[(RT_MAX_OBJECTS + 31) / 32]; /* the set outside them */
 } rt_dir_grid;
 
 /* Every grid of one render, in the caller's (the tracer's) memory. */
@@ -50,7 +48,7 @@ typedef struct {
  * get RT_DIR_NONE. */
 void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s);
 
-/* Fills g (its bit sets at cell, RT_DIR_SETS * words words) with the
+/* Fills g (its bit sets at cell, 2 RT_DIR_GRID^2 * words words) with the
  * objects of s a ray from within radius of centre can hit. */
 void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
                          const rt_scene *s, fx_vec3 centre, fx_t radius);

@@ -118,7 +118,7 @@ static void shadow_trial(double spread, long *hits, long *missing)
 {
     static rt_scene s;
     static rt_dir_grid g;
-    static uint32_t cell[RT_DIR_SETS];
+    static uint32_t cell[2 * RT_DIR_GRID * RT_DIR_GRID];
     random_scene(&s, spread);
     const rt_object *near = &s.obj[th_rnd64(&rng) % s.n_objects];
     fx_vec3 lp = th_rnd64(&rng) % 4 == 0
@@ -149,7 +149,7 @@ static void leaving_trial(double spread, long *hits, long *missing)
 {
     static rt_scene s;
     static rt_dir_grid g;
-    static uint32_t cell[RT_DIR_SETS];
+    static uint32_t cell[2 * RT_DIR_GRID * RT_DIR_GRID];
     random_scene(&s, spread);
     const rt_object *from = &s.obj[th_rnd64(&rng) % s.n_objects];
     rt_dir_grid_prepare(&g, cell, 1, &s, from->bc, from->br);
