@@ -13,7 +13,7 @@ FT=build/posix/fixtrace
 $MAKE -s "$FT" >/dev/null
 mkdir -p build/bench
 if [ $QUICK = 1 ]; then
-    OUT=build/bench/quick.md W=48 H=36 SCENES="scenes/seed.scene" BOARDS="an385"
+    OUT=build/bench/quick.md W=48 H=36 SCENES=$(ls scenes/*.scene) BOARDS="an385"
 else
     OUT=docs/bench.md W=320 H=240 SCENES=$(ls scenes/*.scene) BOARDS="an385 m0"
 fi
