@@ -275,7 +275,7 @@ static rt_rgb shade(const rt_tracer *tr, const rt_ray *r, unsigned depth,
     unsigned skip_out = (o->convex && outside) ? oi : NO_SKIP;
 #if defined(RT_NO_SHADOWS) && defined(RT_NO_REFLECTION) && \
     defined(RT_NO_REFRACTION)
-    (void)p_out, (void)have_out, (void)skip_out; /* no secondary rays */
+    (void)off, (void)p_out, (void)have_out, (void)skip_out; /* no rays */
 #endif
     rt_rgb c = tr->amb[o->material][tex];
     fx_t kdl = tr->kdl[o->material];
