@@ -429,7 +429,7 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
     tr.blocker = blocker;
     uint32_t budget = 0;
     tr.budget = &budget;
-    tr.cut_budget = o->trace_all ? 0 : RT_CUT_BUDGET;
+    tr.cut_budget = o->trace_all ? 0 : RT_CUT_BUDGET / (n * n);
     tr.scene = s;
     tr.max_depth = o->depth;
     tr.feat = rt_scene_features(s, o->spp);

@@ -28,10 +28,10 @@ typedef struct {
                                by more than this many 8-bit levels get the
                                spp grid; the rest keep their centre sample */
     uint8_t trace_all;      /* 0: skip reflected and refracted rays too
-                               faint to move a sample by half an 8-bit
-                               level, all of them together (see
-                               docs/render-model.md). 1: trace every ray to
-                               `depth` */
+                               faint to move a pixel by half an 8-bit
+                               level divided by spp, all of them together
+                               (see docs/render-model.md). 1: trace every
+                               ray to `depth` */
 } rt_options;
 
 /* Ray and test counters. The renderer adds to them and never resets them,

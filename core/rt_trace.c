@@ -202,7 +202,7 @@ static fx_t child_weight(fx_t w, fx_t k)
 
 /* 1 if a ray of weight w at this depth must be traced. If not, its colour
  * is taken as 0: its bound w B is taken off the sample's budget, so all
- * the rays a sample skips add up to less than RT_CUT_BUDGET per channel. */
+ * the rays a sample skips add up to less than its budget per channel. */
 static int worth_tracing(const rt_tracer *tr, fx_t w, unsigned depth)
 {
     uint64_t cost = (uint64_t)(uint32_t)w * tr->bound[tr->max_depth - depth];

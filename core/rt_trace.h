@@ -40,7 +40,7 @@ typedef struct {
     /* The current sample's allowance for untraced colour (Q32.32): a ray
      * of weight w and bound B is skipped when w B is below it, and w B is
      * then taken off. cut_budget is its value at the start of each
-     * sample: RT_CUT_BUDGET, or 0 to trace every ray. */
+     * sample: RT_CUT_BUDGET / spp, or 0 to trace every ray. */
     uint32_t *budget;
     uint32_t cut_budget;
 #if RT_DIR_GRIDS
@@ -71,8 +71,8 @@ static inline void rt_ray_set(rt_ray *r, fx_vec3 o, fx_vec3 d)
     r->small = (uint8_t)rt_small3(o);
 }
 
-/* Sample budget for untraced colour: 2^-9 (Q32.32), under half an 8-bit
- * level (1/510). */
+/* Budget for untraced colour at 1 spp: 2^-9 (Q32.32), under half an 8-bit
+ * level (1/510). rt_render divides it by the samples per pixel. */
 #define RT_CUT_BUDGET ((uint32_t)1 << 23)
 
 /* Colour seen along r (unclamped). depth counts bounces so far; w is the

@@ -80,7 +80,7 @@ static void usage(FILE *f)
 "                        8-bit levels) get the full -s grid; needs -s > 1\n"
 "        --trace-all     trace every reflected and refracted ray to the\n"
 "                        depth limit; by default rays too faint to move a\n"
-"                        sample by half an 8-bit level, all of them\n"
+"                        pixel by half an 8-bit level / spp, all of them\n"
 "                        together, are skipped\n"
 "        --reference     render with the double-precision reference\n"
 "        --stats         print ray counters and timing on stderr\n"
