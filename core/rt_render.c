@@ -427,9 +427,11 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
     for (unsigned i = 0; i < RT_MAX_LIGHTS; i++)
         blocker[i] = 0xFFFFu;
     tr.blocker = blocker;
+#if RT_CUTOFF
     uint32_t budget = 0;
     tr.budget = &budget;
     tr.cut_budget = o->trace_all ? 0 : RT_CUT_BUDGET / (n * n);
+#endif
     tr.scene = s;
     tr.max_depth = o->depth;
     tr.feat = rt_scene_features(s, o->spp);

@@ -408,7 +408,9 @@ rt_rgb rt_trace_camera(const rt_tracer *tr, const rt_ray *r,
     uint16_t oi = 0;
     uint8_t part = 0;
     int found = 0;
+#if RT_CUTOFF
     *tr->budget = tr->cut_budget; /* a new sample */
+#endif
     for (unsigned k = 0; k < n_spans; k++) {
         fx_t ti;
         uint8_t pi;
@@ -478,6 +480,7 @@ static void find_sealed(rt_tracer *tr)
 }
 #endif
 
+#if RT_CUTOFF
 static fx_t channel(rt_rgb c, unsigned k)
 {
     return k == 0 ? c.r : (k == 1 ? c.g : c.b);
@@ -521,6 +524,7 @@ static int64_t local_bound(const rt_scene *s)
     }
     return top;
 }
+#endif
 
 void rt_tracer_prepare(rt_tracer *tr)
 {
@@ -553,6 +557,7 @@ void rt_tracer_prepare(rt_tracer *tr)
         tr->spec_min[i] = lo;
 #endif
     }
+#if RT_CUTOFF
     /* With k bounces left a ray adds at most kr + kt <= 1 times the
      * bound for k - 1 (plus two roundings) to its local colour. */
     int64_t local = local_bound(s), kmax = 0;
@@ -564,6 +569,7 @@ void rt_tracer_prepare(rt_tracer *tr)
         tr->bound[k] = b > INT32_MAX ? (uint32_t)INT32_MAX : (uint32_t)b;
         b = local + mul_up(kmax, b) + 2;
     }
+#endif
 #if RT_SEALED
     find_sealed(tr);
 #endif

@@ -5,6 +5,13 @@
 #include "rt_cull.h"
 #include "rt_dirgrid.h"
 
+/* The cut-off of faint rays: only in builds that have secondary rays. */
+#if !defined(RT_NO_REFLECTION) || !defined(RT_NO_REFRACTION)
+#define RT_CUTOFF 1
+#else
+#define RT_CUTOFF 0
+#endif
+
 /* Culling for closed glass (rt_tracer.alone and .dark), off with the
  * direction grids (RT_DIR_GRID 0) so that suite_cull compares it too. */
 #if RT_DIR_GRIDS && !defined(RT_NO_REFRACTION)
@@ -34,6 +41,7 @@ typedef struct {
 #endif
     /* The largest cosine rv whose highlight ks rv^n rounds to 0. */
     fx_t spec_min[RT_MAX_MATERIALS];
+#if RT_CUTOFF
     /* bound[k]: no channel of the colour of a ray with k bounces left
      * reaches it (Q16.16, rounding included). */
     uint32_t bound[RT_MAX_DEPTH + 1];
@@ -43,6 +51,7 @@ typedef struct {
      * sample: RT_CUT_BUDGET / spp, or 0 to trace every ray. */
     uint32_t *budget;
     uint32_t cut_budget;
+#endif
 #if RT_DIR_GRIDS
     rt_dir_grids grids; /* what shadow and secondary rays may hit */
 #endif
