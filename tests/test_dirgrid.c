@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "harness.h"
-#include "rt_dirgrid.h"
+#include "rt_trace.h"
 
 #define D2F(x) ((fx_t)lround((x) * 65536.0))
 
@@ -105,10 +105,7 @@ static void check_ray(const rt_scene *s, const rt_ray *r, fx_t tmax,
 static rt_ray make_ray(fx_vec3 o, fx_vec3 d)
 {
     rt_ray r;
-    r.o = o;
-    r.d = d;
-    r.e = rt_unit_err(d);
-    r.small = (uint8_t)rt_small3(o);
+    rt_ray_set(&r, o, d);
     return r;
 }
 

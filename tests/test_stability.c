@@ -37,6 +37,7 @@
 #include "rt_internal.h"
 #include "rt_parse.h"
 #include "rt_render.h"
+#include "rt_trace.h"
 
 #define D2F(x) ((fx_t)lround((x) * 65536.0))
 #define F2D(x) ((double)(x) / 65536.0)
@@ -412,10 +413,7 @@ static fx_vec3 V(double x, double y, double z)
 static rt_ray ray_raw(fx_vec3 o, fx_vec3 d)
 {
     rt_ray r;
-    r.o = o;
-    r.d = d;
-    r.e = rt_unit_err(d);
-    r.small = (uint8_t)rt_small3(o);
+    rt_ray_set(&r, o, d);
     return r;
 }
 
