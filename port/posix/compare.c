@@ -66,7 +66,7 @@ int compare_images(const ppm_image *a, const ppm_image *b, compare_result *r)
                 r->bad++;
             if (e > COMPARE_OUTLIER_LEVEL) {
                 r->outliers++;
-                if (!at_edge(a, x, y))
+                if (!at_edge(b, x, y))
                     r->interior_outliers++;
             }
         }
@@ -125,16 +125,17 @@ static void usage(FILE *f)
             "[--min-psnr DB]\n"
             "                        [--max-bad PERCENT] "
             "[--max-interior-outliers N]\n"
-            "  Compares two binary PPM images of the same size.\n"
+            "  Compares two binary PPM images of the same size; B is the\n"
+            "  reference (edges are judged on it).\n"
             "  --diff FILE    write a heat map of the error (black = equal,\n"
             "                 then blue, green, yellow, red)\n"
             "  --min-psnr DB  fail (exit 1) below this PSNR\n"
             "  --max-bad P    fail when more than P %% of pixels are off by "
             "more than %d/255\n"
             "  --max-interior-outliers N\n"
-            "                 fail when more than N pixels away from edges "
-            "are off by\n"
-            "                 more than %d/255\n"
+            "                 fail when more than N pixels away from B's "
+            "edges (speckles)\n"
+            "                 are off by more than %d/255\n"
             "  Exit status: 0 ok, 1 a threshold missed, 2 usage or input "
             "error.\n",
             COMPARE_BAD_LEVEL, COMPARE_OUTLIER_LEVEL);

@@ -14,8 +14,11 @@
 /* A pixel is an outlier when a channel is off by more than this. */
 #define COMPARE_OUTLIER_LEVEL 64
 
-/* A pixel is at an edge of image A when, in the 3x3 neighbourhood around
- * it (clipped at the border), some channel spans more than this. */
+/* A pixel is at an edge of image B (the reference, by convention) when,
+ * in the 3x3 neighbourhood around it (clipped at the border), some channel
+ * spans more than this. An outlier away from B's edges is a speckle: no
+ * silhouette or texture edge of the ideal image explains it. (Judged on A,
+ * a lone wrong pixel would make its own neighbourhood an edge.) */
 #define COMPARE_EDGE_RANGE 64
 
 typedef struct {
@@ -26,7 +29,7 @@ typedef struct {
     long bad;               /* pixels off by more than COMPARE_BAD_LEVEL */
     double bad_pct;         /* the same as a percentage of all pixels */
     long outliers;          /* pixels off by more than COMPARE_OUTLIER_LEVEL */
-    long interior_outliers; /* outliers that are not at an edge of A */
+    long interior_outliers; /* speckles: outliers not at an edge of B */
 } compare_result;
 
 /* Compares a with b. Returns 0 with *r filled, or -1 when their sizes
