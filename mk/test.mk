@@ -25,8 +25,23 @@ $(HOST_BUILD)/tests:
 
 -include $(TEST_SRC:tests/%.c=$(HOST_BUILD)/tests/%.d)
 
-.PHONY: test test-build
-test-build: $(FIXTRACE) $(TEST_BIN)
+# The random scene generator of the randomized differential test
+# (tools/random_test.sh): a host tool, not a unit-test binary.
+RANDSCENE := $(HOST_BUILD)/tests/randscene
+$(RANDSCENE): tests/randscene.c $(HOST_STAMP) | $(HOST_BUILD)/tests
+	@$(if $(Q),echo "  CC      $<")
+	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) $(HOST_LDFLAGS) $< -o $@ -lm
+
+.PHONY: test test-build random-test
+test-build: $(FIXTRACE) $(TEST_BIN) $(RANDSCENE)
+
+# Many more random scenes than make test runs: make random-test
+# [RANDOM_FIRST=1] [RANDOM_COUNT=5000].
+RANDOM_FIRST ?= 1
+RANDOM_COUNT ?= 5000
+random-test: $(FIXTRACE) $(RANDSCENE)
+	$(Q)HOST_BUILD=$(HOST_BUILD) bash tools/random_test.sh $(RANDOM_FIRST) \
+	    $(RANDOM_COUNT)
 
 test: test-build
 	$(Q)HOST_BUILD=$(HOST_BUILD) SANITIZE=$(SANITIZE) MAKE="$(MAKE)" \
