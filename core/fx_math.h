@@ -225,6 +225,47 @@ static inline int32_t fx_floor_int(fx_t x)
     return x >> 16;
 }
 
+/* The reciprocal fx_floor_div needs: floor((2^32 - 1) / d) for d > 0. */
+static inline uint32_t fx_floor_rcp(fx_t d)
+{
+    return 0xFFFFFFFFu / (uint32_t)d;
+}
+
+/* floor(n / d) for d > 0 (any two raw values: the quotient of two Q16.16
+ * numbers is a plain integer), exact for every |n| < 2^32; the remainder
+ * n - q d, in [0, d), goes to *rem. rcp is fx_floor_rcp(d). For |n| <
+ * 2^31, n rcp / 2^32 lies within 1 of n / d (below it for n >= 0, above
+ * for n < 0), so one step corrects it with no division; the remainder is
+ * formed in unsigned arithmetic, which wraps by definition, and a
+ * remainder out of [0, d) reads as >= d either way. Larger n (points over
+ * 32,768 units from a texture's origin) take a 64-bit division. */
+static inline int64_t fx_floor_div(int64_t n, fx_t d, uint32_t rcp,
+                                   fx_t *rem)
+{
+    if (n < INT32_MIN || n > INT32_MAX) {
+        int64_t q = n / d, r = n - q * d;
+        if (r < 0) {
+            q--;
+            r += d;
+        }
+        *rem = (fx_t)r;
+        return q;
+    }
+    int32_t q = (int32_t)((n * (int64_t)rcp) >> 32);
+    uint32_t r = (uint32_t)n - (uint32_t)q * (uint32_t)d;
+    if (r >= (uint32_t)d) {
+        if (n >= 0) {
+            q++;
+            r -= (uint32_t)d;
+        } else {
+            q--;
+            r += (uint32_t)d;
+        }
+    }
+    *rem = (fx_t)r;
+    return q;
+}
+
 /* Rounds a Q16.16 value in [0, 1] to 0..255 (to nearest, ties up);
  * clamps values outside [0, 1]. */
 static inline uint8_t fx_to_u8(fx_t c)

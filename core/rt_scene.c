@@ -175,12 +175,12 @@ rt_status rt_material_prepare(rt_material *m)
     if (m->texture != RT_TEX_NONE) {
         if (m->tex_scale <= 0)
             return RT_ERR_ARG;
-        m->tex_inv = fx_recip(m->tex_scale);
+        m->tex_rcp = fx_floor_rcp(m->tex_scale);
     }
     if (m->bump != 0) {
         if (m->bump_scale <= 0)
             return RT_ERR_ARG;
-        m->bump_inv = fx_recip(m->bump_scale);
+        m->bump_rcp = fx_floor_rcp(m->bump_scale);
     }
     return RT_OK;
 }

@@ -52,9 +52,9 @@ typedef struct {
     fx_t bump;          /* normal perturbation amplitude, 0 = none */
     fx_t bump_scale;    /* size of one bump feature, > 0 */
     /* Derived by rt_material_prepare(). */
-    fx_t tex_inv;       /* 1 / tex_scale */
+    uint32_t tex_rcp;   /* fx_floor_rcp(tex_scale): exact texture cells */
     fx_t ior_inv;       /* 1 / ior */
-    fx_t bump_inv;      /* 1 / bump_scale */
+    uint32_t bump_rcp;  /* fx_floor_rcp(bump_scale): exact lattice cells */
 } rt_material;
 
 typedef enum {

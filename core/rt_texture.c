@@ -1,43 +1,45 @@
 /* rt_texture: procedural textures and bump noise, owned by materials. */
 #include "rt_internal.h"
 
-/* Local point: textures follow the object, not the world origin. */
-static fx_vec3 local_point(const rt_object *o, fx_vec3 p)
+/* Cell index of p - a along one axis for cells of size m->tex_scale:
+ * floor((p - a) / size), exact at any distance from the origin a (the
+ * difference can exceed Q16.16, so it is formed in 64 bits). */
+static int64_t cell(const rt_material *m, fx_t p, fx_t a)
 {
-    return fx_v3_sub(p, o->a);
+    fx_t rem;
+    return fx_floor_div((int64_t)p - a, m->tex_scale, m->tex_rcp, &rem);
 }
 
+/* Textures follow the object, not the world origin: cells count from the
+ * object's first point o->a. */
 unsigned rt_texel(const rt_material *m, const rt_object *o, fx_vec3 p)
 {
-    fx_vec3 q = local_point(o, p);
-    int32_t idx;
+    int64_t idx;
     switch (m->texture) {
-    case RT_TEX_STRIPES: {
-        fx_t c = m->axis == 0 ? q.x : (m->axis == 1 ? q.y : q.z);
-        idx = fx_floor_int(fx_mul(c, m->tex_inv));
+    case RT_TEX_STRIPES:
+        idx = m->axis == 0 ? cell(m, p.x, o->a.x)
+                           : (m->axis == 1 ? cell(m, p.y, o->a.y)
+                                           : cell(m, p.z, o->a.z));
         break;
-    }
     case RT_TEX_CHECKER:
-        idx = fx_floor_int(fx_mul(q.x, m->tex_inv)) +
-              fx_floor_int(fx_mul(q.z, m->tex_inv));
+        idx = cell(m, p.x, o->a.x) + cell(m, p.z, o->a.z);
         break;
     case RT_TEX_CHECKER3D:
-        idx = fx_floor_int(fx_mul(q.x, m->tex_inv)) +
-              fx_floor_int(fx_mul(q.y, m->tex_inv)) +
-              fx_floor_int(fx_mul(q.z, m->tex_inv));
+        idx = cell(m, p.x, o->a.x) + cell(m, p.y, o->a.y) +
+              cell(m, p.z, o->a.z);
         break;
     default:
         return 0;
     }
-    return (unsigned)idx & 1u;
+    return (unsigned)(idx & 1);
 }
 
 /* Lattice value in [-1, 1): the integer hash of docs/render-model.md,
  * unsigned so every product wraps by definition. */
-static fx_t lattice(uint32_t seed, int32_t ix, int32_t iy, int32_t iz)
+static fx_t lattice(uint32_t seed, uint32_t ix, uint32_t iy, uint32_t iz)
 {
-    uint32_t h = ((uint32_t)ix * 73856093u) ^ ((uint32_t)iy * 19349663u) ^
-                 ((uint32_t)iz * 83492791u) ^ (seed * 2654435761u);
+    uint32_t h = (ix * 73856093u) ^ (iy * 19349663u) ^ (iz * 83492791u) ^
+                 (seed * 2654435761u);
     h ^= h >> 15;
     h *= 0x2c1b3c6du;
     h ^= h >> 12;
@@ -57,15 +59,17 @@ static fx_t smooth(fx_t f)
     return fx_mul(fx_mul(f, f), FX_INT(3) - 2 * f);
 }
 
-/* Trilinear value noise at u (Q16.16 lattice units). */
-static fx_t noise(uint32_t seed, const int32_t i[3], const fx_t s[3])
+/* Trilinear value noise in lattice cell i (coordinates modulo 2^32, as
+ * the hash takes them) at fractions s. */
+static fx_t noise(uint32_t seed, const uint32_t i[3], const fx_t s[3])
 {
     fx_t zv[2];
     for (int dz = 0; dz < 2; dz++) {
         fx_t yv[2];
         for (int dy = 0; dy < 2; dy++) {
-            fx_t v0 = lattice(seed, i[0], i[1] + dy, i[2] + dz);
-            fx_t v1 = lattice(seed, i[0] + 1, i[1] + dy, i[2] + dz);
+            uint32_t y = i[1] + (uint32_t)dy, z = i[2] + (uint32_t)dz;
+            fx_t v0 = lattice(seed, i[0], y, z);
+            fx_t v1 = lattice(seed, i[0] + 1u, y, z);
             yv[dy] = lerp(v0, v1, s[0]);
         }
         zv[dz] = lerp(yv[0], yv[1], s[1]);
@@ -76,14 +80,17 @@ static fx_t noise(uint32_t seed, const int32_t i[3], const fx_t s[3])
 fx_vec3 rt_bump(const rt_material *m, const rt_object *o, fx_vec3 p,
                 fx_vec3 n)
 {
-    fx_vec3 q = local_point(o, p);
-    fx_t u[3] = { fx_mul(q.x, m->bump_inv), fx_mul(q.y, m->bump_inv),
-                  fx_mul(q.z, m->bump_inv) };
-    int32_t i[3];
+    /* Lattice cell i = floor((p - a) / size), exact, and the fraction
+     * within it, rem / size, rounded down (rem < size, so rem rcp fits 64
+     * bits and the fraction is below 1). */
+    const fx_t pk[3] = { p.x, p.y, p.z }, ak[3] = { o->a.x, o->a.y, o->a.z };
+    uint32_t i[3];
     fx_t s[3];
     for (int k = 0; k < 3; k++) {
-        i[k] = fx_floor_int(u[k]);
-        s[k] = smooth(u[k] & 0xFFFF);
+        fx_t rem;
+        i[k] = (uint32_t)fx_floor_div((int64_t)pk[k] - ak[k],
+                                      m->bump_scale, m->bump_rcp, &rem);
+        s[k] = smooth((fx_t)(((uint64_t)(uint32_t)rem * m->bump_rcp) >> 16));
     }
     fx_vec3 g = fx_v3(noise(1, i, s), noise(2, i, s), noise(3, i, s));
     return fx_v3_normalize(fx_v3_madd(n, g, m->bump));

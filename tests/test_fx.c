@@ -705,6 +705,49 @@ static void test_sqrt_q32_isqrt64(void)
 #endif
 }
 
+/* fx_floor_div: the exact floor quotient and remainder for every divisor
+ * and every dividend below 2^32 in magnitude (texture and bump cells). */
+static void test_floor_div(void)
+{
+    long bad = 0;
+    for (long i = 0; i < N_RANDOM; i++) {
+        fx_t d = rnd_fx();
+        if (d <= 0)
+            d = d == INT32_MIN ? INT32_MAX : (d == 0 ? 1 : -d);
+        int64_t n = (int64_t)rnd_fx();
+        if (i % 4 == 1) /* beyond Q16.16: a difference of two points */
+            n = n * 2 + (int64_t)(rnd32() & 1);
+        else if (i % 4 == 2) /* near a multiple of d */
+            n = (int64_t)d * ((int32_t)rnd32() % 1000) +
+                (int64_t)(rnd32() % 5) - 2;
+        fx_t rem;
+        int64_t q = fx_floor_div(n, d, fx_floor_rcp(d), &rem);
+        /* The true floor quotient, from C's truncating division. */
+        int64_t tq = n / d, tr = n - tq * d;
+        if (tr < 0) {
+            tq--;
+            tr += d;
+        }
+        if (q != tq || rem != tr) {
+            if (bad++ < 5)
+                printf("floor_div(%lld, %ld): %lld rem %ld, want %lld rem "
+                       "%lld\n", (long long)n, (long)d, (long long)q,
+                       (long)rem,
+                       (long long)tq, (long long)tr);
+        }
+    }
+    CHECK_EQ(bad, 0);
+    fx_t rem;
+    CHECK_EQ(fx_floor_div(INT32_MIN, 1, fx_floor_rcp(1), &rem), INT32_MIN);
+    CHECK_EQ(rem, 0);
+    CHECK_EQ(fx_floor_div(INT32_MAX, 1, fx_floor_rcp(1), &rem), INT32_MAX);
+    CHECK_EQ(fx_floor_div(-1, INT32_MAX, fx_floor_rcp(INT32_MAX), &rem), -1);
+    CHECK_EQ(rem, INT32_MAX - 1);
+    CHECK_EQ(fx_floor_div(-((int64_t)1 << 32) + 1, 3, fx_floor_rcp(3), &rem),
+             -1431655765);
+    CHECK_EQ(rem, 0);
+}
+
 int main(void)
 {
     test_truth();
@@ -716,5 +759,6 @@ int main(void)
     test_recip();
     test_sqrt();
     test_sqrt_q32_isqrt64();
+    test_floor_div();
     return th_summary();
 }

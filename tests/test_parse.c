@@ -438,14 +438,14 @@ static void test_full_scene(void)
     CHECK_EQ(m->ior, 98304);
     CHECK_EQ(m->bump, FX_ONE / 4);
     CHECK_EQ(m->bump_scale, FX_INT(2));
-    CHECK_EQ(m->bump_inv, FX_HALF); /* rt_material_prepare ran */
+    CHECK_EQ(m->bump_rcp, 0xFFFFFFFFu / (uint32_t)FX_INT(2)); /* prepared */
     m = &S.mat[2];
     CHECK_EQ(m->texture, RT_TEX_STRIPES);
     CHECK_EQ(m->axis, 2);
     CHECK_EQ(m->color2.b, FX_ONE);
     CHECK_EQ(m->color2.r, 0);
     CHECK_EQ(m->tex_scale, FX_HALF);
-    CHECK_EQ(m->tex_inv, FX_INT(2));
+    CHECK_EQ(m->tex_rcp, 0xFFFFFFFFu / (uint32_t)FX_HALF);
     CHECK_EQ(S.mat[3].texture, RT_TEX_CHECKER);
     CHECK_EQ(S.mat[3].tex_scale, FX_INT(2));
     CHECK_EQ(S.mat[4].texture, RT_TEX_CHECKER3D);

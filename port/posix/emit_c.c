@@ -137,9 +137,9 @@ static void put_material(emitter *e, const rt_material *m)
     put_fx(e, "bump", m->bump);
     put_fx(e, "bump_scale", m->bump_scale);
     put(e, "/* Derived by rt_material_prepare(). */");
-    put_fx(e, "tex_inv", m->tex_inv);
+    put_uint(e, "tex_rcp", m->tex_rcp);
     put_fx(e, "ior_inv", m->ior_inv);
-    put_fx(e, "bump_inv", m->bump_inv);
+    put_uint(e, "bump_rcp", m->bump_rcp);
 }
 
 static void put_object(emitter *e, const rt_object *o)
