@@ -32,8 +32,16 @@ $(RANDSCENE): tests/randscene.c $(HOST_STAMP) | $(HOST_BUILD)/tests
 	@$(if $(Q),echo "  CC      $<")
 	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) $(HOST_LDFLAGS) $< -o $@ -lm
 
+# The POV-Ray translator of tests/suite_povray.sh: reads a scene with the
+# core's parser.
+SCENE2POV := $(HOST_BUILD)/tests/scene2pov
+$(SCENE2POV): tests/scene2pov.c $(HOST_CORE_OBJ) | $(HOST_BUILD)/tests
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) -Icore $(HOST_LDFLAGS) $< \
+	    $(HOST_CORE_OBJ) -o $@ -lm
+
 .PHONY: test test-build random-test
-test-build: $(FIXTRACE) $(TEST_BIN) $(RANDSCENE)
+test-build: $(FIXTRACE) $(TEST_BIN) $(RANDSCENE) $(SCENE2POV)
 
 # Many more random scenes than make test runs: make random-test
 # [RANDOM_FIRST=1] [RANDOM_COUNT=5000].
