@@ -112,6 +112,16 @@ expect 0 '^rays_cut 0$' -- "$FT" -q --stats --trace-all -W 40 -H 30 -o "$tmp/t.p
 cmp -s "$tmp/s.ppm" "$tmp/t.ppm" && bad "--trace-all rendered the same bytes" || ok
 expect 0 '' -- "$FT" -q -W 40 -H 30 -o "$tmp/a.png" "$SEED"
 head -c 8 "$tmp/a.png" | od -An -tx1 | grep -q '89 50 4e 47 0d 0a 1a 0a' && ok || bad "PNG signature"
+# The extension picks the format in any letter case, as the name check
+# accepts it.
+for ext in Png pNG PNG; do
+    expect 0 '' -- "$FT" -q -W 40 -H 30 -o "$tmp/case.$ext" "$SEED"
+    cmp -s "$tmp/a.png" "$tmp/case.$ext" && ok || bad "-o x.$ext did not write the PNG"
+done
+for ext in PPM Pnm; do
+    expect 0 '' -- "$FT" -q -W 40 -H 30 -o "$tmp/case.$ext" "$SEED"
+    cmp -s "$tmp/a.ppm" "$tmp/case.$ext" && ok || bad "-o x.$ext did not write the PPM"
+done
 if command -v pngtopnm >/dev/null; then
     pngtopnm "$tmp/a.png" >"$tmp/a2.ppm" 2>/dev/null
     # netpbm writes "P6\n40 30\n255\n" as we do.

@@ -2,10 +2,10 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
-#include <strings.h>
 #include <sys/stat.h>
 
 #include "cli_util.h"
+#include "image_out.h"
 
 int cli_error(const char *fmt, ...)
 {
@@ -52,19 +52,12 @@ int cli_unknown_option(const char *opt)
     return cli_error("unknown option '%s' (see fixtrace --help)", opt);
 }
 
-static int ends_with_ci(const char *s, const char *suffix)
-{
-    size_t n = strlen(s), m = strlen(suffix);
-    return n >= m && strcasecmp(s + n - m, suffix) == 0;
-}
-
 int cli_check_output(const char *out, const char *scene)
 {
     struct stat a, b;
     if (strcmp(out, "-") == 0)
         return 0;
-    if (!ends_with_ci(out, ".ppm") && !ends_with_ci(out, ".pnm") &&
-        !ends_with_ci(out, ".png"))
+    if (image_kind_of(out) == IMAGE_UNKNOWN)
         return cli_error("cannot write '%s': the output name must end in "
                          ".ppm or .png (or be - for PPM on stdout)", out);
     if (stat(out, &a) == 0 && stat(scene, &b) == 0 && a.st_dev == b.st_dev &&

@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -18,10 +19,20 @@ struct image_out {
     char err[200];
 };
 
-static int ends_with(const char *s, const char *suffix)
+static int ends_with_ci(const char *s, const char *suffix)
 {
     size_t n = strlen(s), m = strlen(suffix);
-    return n >= m && strcmp(s + n - m, suffix) == 0;
+    return n >= m && strcasecmp(s + n - m, suffix) == 0;
+}
+
+image_kind image_kind_of(const char *path)
+{
+    if (strcmp(path, "-") == 0 || ends_with_ci(path, ".ppm") ||
+        ends_with_ci(path, ".pnm"))
+        return IMAGE_PPM;
+    if (ends_with_ci(path, ".png"))
+        return IMAGE_PNG;
+    return IMAGE_UNKNOWN;
 }
 
 image_out *image_out_open(const char *path, int w, int h, int format,
@@ -36,7 +47,7 @@ image_out *image_out_open(const char *path, int w, int h, int format,
     o->w = w;
     o->h = h;
     o->format = format;
-    o->png = ends_with(path, ".png") || ends_with(path, ".PNG");
+    o->png = image_kind_of(path) == IMAGE_PNG;
     o->to_stdout = strcmp(path, "-") == 0;
     o->rgb = malloc((size_t)w * (size_t)h * 3);
     if (!o->rgb) {
