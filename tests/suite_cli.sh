@@ -132,6 +132,24 @@ else
 fi
 expect 0 '' -- "$FT" -q --format rgb565le --dither -W 40 -H 30 -o "$tmp/d.ppm" "$SEED"
 
+# --- compare ------------------------------------------------------------
+"$FT" -q -W 40 -H 30 --reference -o "$tmp/r.ppm" "$SEED"
+cp "$tmp/a.ppm" "$tmp/a.keep"
+expect 1 'PSNR' -- "$FT" compare "$tmp/a.ppm" "$tmp/r.ppm" --min-psnr 99
+expect 0 'PSNR' -- "$FT" compare "$tmp/a.ppm" "$tmp/r.ppm" --diff "$tmp/d1.ppm"
+head -c 2 "$tmp/d1.ppm" | grep -q P6 && ok || bad "compare --diff x.ppm is not a PPM"
+# The diff never overwrites an input, by name or by another path to it.
+for d in "$tmp/a.ppm" "$tmp/r.ppm" "$tmp/./a.ppm"; do
+    expect 2 'is the input' -- "$FT" compare "$tmp/a.ppm" "$tmp/r.ppm" --diff "$d"
+done
+cmp -s "$tmp/a.ppm" "$tmp/a.keep" && ok || bad "compare --diff overwrote its input"
+# Names the render command refuses are refused here too.
+expect 2 'must end in .ppm or .png' -- "$FT" compare "$tmp/a.ppm" "$tmp/r.ppm" --diff "$tmp/d.jpg"
+[ ! -e "$tmp/d.jpg" ] && ok || bad "compare wrote a .jpg diff"
+expect 2 'must end in .ppm or .png' -- "$FT" compare "$tmp/a.ppm" "$tmp/r.ppm" --diff -
+expect 0 '' -- "$FT" compare "$tmp/a.ppm" "$tmp/r.ppm" --diff "$tmp/d1.PNG"
+head -c 4 "$tmp/d1.PNG" | od -An -c | grep -q 'P   N   G' && ok || bad "compare --diff x.PNG is not a PNG"
+
 # --- bad scenes (file:line:col and the line) -----------------------------
 scene_case() { # name, expected message regex, scene text
     printf '%b' "$3" >"$tmp/$1.scene"
