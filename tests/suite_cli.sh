@@ -100,6 +100,17 @@ head -c 2 "$tmp/a.ppm" | grep -q P6 && ok || bad "output is not a P6 PPM"
 expect 0 '' -- "$FT" -q -j 2 -W 40 -H 30 -o "$tmp/b.ppm" "$SEED"
 cmp -s "$tmp/a.ppm" "$tmp/b.ppm" && ok || bad "-j 2 differs from -j 1"
 "$FT" -q -W 40 -H 30 -o - "$SEED" >"$tmp/c.ppm" && cmp -s "$tmp/a.ppm" "$tmp/c.ppm" && ok || bad "-o - differs"
+# -o - on a terminal: refused before rendering, nothing binary shown.
+if command -v script >/dev/null 2>&1; then
+    script -qec "$FT -W 40 -H 30 -o - $SEED" /dev/null >"$tmp/tty.out" 2>&1
+    rc=$?
+    [ $rc -eq 2 ] && ok || bad "-o - on a terminal exited $rc, want 2"
+    grep -q 'stdout, which is a terminal' "$tmp/tty.out" && ok ||
+        bad "-o - on a terminal: no message ($(head -c 200 "$tmp/tty.out"))"
+    grep -q 'P6' "$tmp/tty.out" && bad "-o - wrote the PPM to a terminal" || ok
+else
+    echo "note: script(1) missing; -o - on a terminal not checked"
+fi
 expect 0 '' -- "$FT" -q -W 40 -H 30 -o "$tmp/keep.ppm" "$SEED"
 cmp -s "$tmp/a.ppm" "$tmp/keep.ppm" && ok || bad "a good render did not replace the old file"
 expect 0 '^primary_rays 1200$' -- "$FT" -q --stats -W 40 -H 30 -o "$tmp/s.ppm" "$SEED"

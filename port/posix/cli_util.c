@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "cli_util.h"
 #include "image_out.h"
@@ -55,8 +56,13 @@ int cli_unknown_option(const char *opt)
 int cli_check_output(const char *out, const char *scene)
 {
     struct stat a, b;
-    if (strcmp(out, "-") == 0)
+    if (strcmp(out, "-") == 0) {
+        if (isatty(STDOUT_FILENO))
+            return cli_error("-o - writes a binary image to stdout, which "
+                             "is a terminal; redirect it (> NAME.ppm, or a "
+                             "pipe) or name a file with -o NAME.png");
         return 0;
+    }
     if (image_kind_of(out) == IMAGE_UNKNOWN)
         return cli_error("cannot write '%s': the output name must end in "
                          ".ppm or .png (or be - for PPM on stdout)", out);

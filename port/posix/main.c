@@ -67,6 +67,7 @@ static void usage(FILE *f)
 "OPTIONS\n"
 "    -o, --output FILE   output image (default: SCENE's name with .ppm, in\n"
 "                        the current directory); - writes PPM to stdout\n"
+"                        (a pipe or a file, never a terminal)\n"
 "    -W, --width N       image width, 1..4096 (default: the scene's)\n"
 "    -H, --height N      image height, 1..4096 (default: the scene's)\n"
 "    -s, --spp N         samples per pixel: 1, 4, 9 or 16 (default: the\n"
