@@ -143,6 +143,27 @@ else
 fi
 expect 0 '' -- "$FT" -q --format rgb565le --dither -W 40 -H 30 -o "$tmp/d.ppm" "$SEED"
 
+# --build-flags on a scene that needs every effect: an empty flags line on
+# stdout (still a valid $(...) list) and a comment saying so.
+cat >"$tmp/all.scene" <<'EOF2'
+camera eye 0 2 -8 look 0 0 0
+image 16 12 spp 4
+light 5 10 -5
+light -5 10 -5
+material a color 1 1 1 reflect 0.5 stripes x 0 0 0 1 bump 0.2 1
+material g color 1 1 1 transparency 0.9 ior 1.5
+sphere center 0 0 0 radius 1 material a
+quad corner -5 0 -5 edge1 0 0 10 edge2 10 0 0 material g
+box min 1 0 0 max 2 1 1 material a
+cylinder base -2 0 0 radius 0.5 height 1 material a
+cone base 2 0 2 radius 0.5 height 1 material a
+EOF2
+expect 0 '^# .*all.scene needs every effect at 4 spp' -- "$FT" --build-flags "$tmp/all.scene"
+[ "$(cat "$tmp/out")" = "" ] && ok || bad "--build-flags printed '$(cat "$tmp/out")' for a scene that needs every effect"
+expect 0 '' -- "$FT" --build-flags -s 1 "$tmp/all.scene"
+grep -qx -- '-DRT_NO_SUPERSAMPLING' "$tmp/out" && ok || bad "--build-flags -s 1: '$(cat "$tmp/out")'"
+grep -q 'every effect' "$tmp/err" && bad "--build-flags -s 1 said every effect" || ok
+
 # --- compare ------------------------------------------------------------
 "$FT" -q -W 40 -H 30 --reference -o "$tmp/r.ppm" "$SEED"
 cp "$tmp/a.ppm" "$tmp/a.keep"

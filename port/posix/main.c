@@ -86,7 +86,9 @@ static void usage(FILE *f)
 "        --reference     render with the double-precision reference\n"
 "        --stats         print ray counters and timing on stderr\n"
 "        --build-flags   print the -DRT_NO_* flags that remove every effect\n"
-"                        the scene (at this spp) does not need, and exit\n"
+"                        the scene (at this spp) does not need, and exit;\n"
+"                        when it needs them all, the line is empty and a\n"
+"                        '# ... needs every effect' comment goes to stderr\n"
 "        --emit-c        print the parsed scene as a C constant (for\n"
 "                        firmware without the parser), and exit\n"
 "        --format F      rows as rgb888 (default), rgb565le or rgb565be;\n"
@@ -480,6 +482,11 @@ static int print_build_flags(const cli *c, const rt_scene *scene)
         }
     }
     printf("\n");
+    /* The flags line stays empty so that $(fixtrace --build-flags) stays
+     * a valid list; the note goes beside it. */
+    if (!*sep && !c->quiet)
+        fprintf(stderr, "# %s needs every effect at %u spp: no RT_NO_* "
+                "flag applies\n", c->scene_path, (unsigned)spp);
     return 0;
 }
 
