@@ -200,6 +200,15 @@ scene_case many_digits 'digits' "${CAM}${MAT}sphere center 0.1234567890123456789
 scene_case missing_radius 'radius' "${CAM}${MAT}sphere center 0 0 0 material m\n"
 scene_case nul_byte '' "${CAM}${MAT}sphere center 0 0\0 0 radius 1 material m\n"
 scene_case zero_radius '' "${CAM}${MAT}sphere center 0 0 0 radius 0 material m\n"
+# Shape errors point at the field at fault and state the limit.
+shape_case() { # name, expected line:col, message regex, object line
+    printf '%b' "${CAM}${MAT}$4\n" >"$tmp/$1.scene"
+    expect 2 "$1.scene:$2: error: $3" -- "$FT" -q -o "$tmp/$1.ppm" "$tmp/$1.scene"
+}
+shape_case flat_cone 3:17 'degenerate cone: radius / height must be at most 64' \
+    'cone base 0 0 0 radius 10 height 0.1 material m'
+shape_case thin_cylinder 3:21 'degenerate cylinder: too thin or too flat for Q16.16 .the radius and half the height' \
+    'cylinder base 0 0 0 radius 0.00002 height 30000 material m'
 head -c 3000 /dev/urandom | tr -d '\n' >"$tmp/garbage.scene"
 expect 2 'garbage.scene:1:[0-9]+: error' -- "$FT" -q -o "$tmp/g.ppm" "$tmp/garbage.scene"
 : >"$tmp/empty.scene"
