@@ -1,6 +1,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "deflate.h"
 #include "png.h"
 
 uint32_t png_crc32(uint32_t crc, const uint8_t *p, size_t n)
@@ -20,16 +21,6 @@ uint32_t png_crc32(uint32_t crc, const uint8_t *p, size_t n)
     for (size_t i = 0; i < n; i++)
         crc = table[(crc ^ p[i]) & 0xFF] ^ (crc >> 8);
     return ~crc;
-}
-
-uint32_t png_adler32(uint32_t a, const uint8_t *p, size_t n)
-{
-    uint32_t s1 = a & 0xFFFF, s2 = a >> 16;
-    for (size_t i = 0; i < n; i++) {
-        s1 = (s1 + p[i]) % 65521u;
-        s2 = (s2 + s1) % 65521u;
-    }
-    return s2 << 16 | s1;
 }
 
 static void be32(uint8_t *b, uint32_t v)
@@ -53,6 +44,37 @@ static int chunk(FILE *f, const char *type, const uint8_t *data, size_t n)
                : -1;
 }
 
+/* Paeth predictor (PNG 9.4). */
+static uint8_t paeth(int a, int b, int c)
+{
+    int p = a + b - c;
+    int pa = abs(p - a), pb = abs(p - b), pc = abs(p - c);
+    return (uint8_t)(pa <= pb && pa <= pc ? a : pb <= pc ? b : c);
+}
+
+/* Filters row cur (prev: the row above, or NULL) with filter type f into
+ * out[0..n); returns the sum of the bytes taken as signed, the usual
+ * guess at how well the row will compress. */
+static unsigned long filter_row(int f, const uint8_t *cur, const uint8_t *prev,
+                                size_t n, uint8_t *out)
+{
+    unsigned long cost = 0;
+    for (size_t i = 0; i < n; i++) {
+        int a = i >= 3 ? cur[i - 3] : 0, b = prev ? prev[i] : 0;
+        int c = i >= 3 && prev ? prev[i - 3] : 0, pred;
+        switch (f) {
+        case 1: pred = a; break;
+        case 2: pred = b; break;
+        case 3: pred = (a + b) / 2; break;
+        case 4: pred = paeth(a, b, c); break;
+        default: pred = 0; break;
+        }
+        out[i] = (uint8_t)(cur[i] - pred);
+        cost += out[i] < 128 ? out[i] : 256u - out[i];
+    }
+    return cost;
+}
+
 int png_write(FILE *f, const uint8_t *rgb, int w, int h)
 {
     if (w <= 0 || h <= 0)
@@ -64,41 +86,36 @@ int png_write(FILE *f, const uint8_t *rgb, int w, int h)
     ihdr[8] = 8;  /* bit depth */
     ihdr[9] = 2;  /* colour type: RGB */
     ihdr[10] = ihdr[11] = ihdr[12] = 0;
-    /* Raw scanlines, each with filter byte 0. */
-    size_t stride = (size_t)w * 3 + 1, raw_n = stride * (size_t)h;
-    size_t blocks = (raw_n + 65534) / 65535;
-    size_t z_n = 2 + raw_n + blocks * 5 + 4;
-    uint8_t *raw = malloc(raw_n), *z = malloc(z_n);
+    /* Scanlines, each with the filter that makes it smallest by
+     * filter_row's measure. */
+    size_t row = (size_t)w * 3, stride = row + 1, raw_n = stride * (size_t)h;
+    uint8_t *raw = malloc(raw_n), *try = malloc(row), *z = NULL;
+    size_t z_n = 0;
     int rc = -1;
-    if (!raw || !z)
+    if (!raw || !try)
         goto out;
     for (int y = 0; y < h; y++) {
-        raw[(size_t)y * stride] = 0;
-        memcpy(raw + (size_t)y * stride + 1, rgb + (size_t)y * (size_t)w * 3,
-               (size_t)w * 3);
+        const uint8_t *cur = rgb + (size_t)y * row;
+        const uint8_t *prev = y > 0 ? cur - row : NULL;
+        uint8_t *dst = raw + (size_t)y * stride;
+        unsigned long best = 0;
+        for (int ft = 0; ft < 5; ft++) {
+            unsigned long cost = filter_row(ft, cur, prev, row, try);
+            if (ft == 0 || cost < best) {
+                best = cost;
+                dst[0] = (uint8_t)ft;
+                memcpy(dst + 1, try, row);
+            }
+        }
     }
-    /* zlib stream of stored deflate blocks. */
-    size_t o = 0;
-    z[o++] = 0x78;
-    z[o++] = 0x01;
-    for (size_t pos = 0; pos < raw_n;) {
-        size_t n = raw_n - pos > 65535 ? 65535 : raw_n - pos;
-        z[o++] = pos + n == raw_n ? 1 : 0; /* BFINAL, BTYPE = stored */
-        z[o++] = (uint8_t)(n & 0xFF);
-        z[o++] = (uint8_t)(n >> 8);
-        z[o++] = (uint8_t)(~n & 0xFF);
-        z[o++] = (uint8_t)((~n >> 8) & 0xFF);
-        memcpy(z + o, raw + pos, n);
-        o += n;
-        pos += n;
-    }
-    be32(z + o, png_adler32(1, raw, raw_n));
-    o += 4;
+    if (deflate_zlib(raw, raw_n, &z, &z_n) != 0)
+        goto out;
     if (fwrite(sig, 1, 8, f) == 8 && chunk(f, "IHDR", ihdr, 13) == 0 &&
-        chunk(f, "IDAT", z, o) == 0 && chunk(f, "IEND", ihdr, 0) == 0)
+        chunk(f, "IDAT", z, z_n) == 0 && chunk(f, "IEND", ihdr, 0) == 0)
         rc = 0;
 out:
     free(raw);
+    free(try);
     free(z);
     return rc;
 }

@@ -1,6 +1,7 @@
-/* png: a minimal PNG encoder (RGB, 8 bits, stored deflate blocks, CRC-32
- * and Adler-32), so the host tool writes pictures browsers show without
- * any external package. */
+/* png: a small PNG encoder (RGB, 8 bits, a filter chosen per row, our own
+ * deflate) and decoder (8-bit RGB or grey, any filters, not interlaced),
+ * so the host tool writes and reads pictures browsers show without any
+ * external package. */
 #ifndef PNG_H
 #define PNG_H
 
@@ -15,7 +16,5 @@ int png_write(FILE *f, const uint8_t *rgb, int w, int h);
  * with 0). */
 uint32_t png_crc32(uint32_t crc, const uint8_t *p, size_t n);
 
-/* Adler-32 of n bytes, continuing from a (start with 1). */
-uint32_t png_adler32(uint32_t a, const uint8_t *p, size_t n);
 
 #endif /* PNG_H */
