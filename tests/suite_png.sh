@@ -152,6 +152,32 @@ check 97x61-spp4 -W 97 -H 61 -s 4 scenes/glass.scene
 check 64x48-rgb565le -W 64 -H 48 --format rgb565le "$SEED"
 check 64x48-rgb565be-dither -W 64 -H 48 --format rgb565be --dither "$SEED"
 
+# fixtrace compare reads PNG: its own, and zlib's (pnmtopng, stored and
+# compressed); a damaged PNG is refused with the reason, exit 2.
+"$FT" -q -W 64 -H 48 -o "$tmp/cmp.ppm" "$SEED" &&
+    "$FT" -q -W 64 -H 48 -o "$tmp/cmp.png" "$SEED"
+pngs="$tmp/cmp.png"
+if command -v pnmtopng >/dev/null 2>&1; then
+    for lvl in 0 1 9; do
+        pnmtopng -compression $lvl "$tmp/cmp.ppm" >"$tmp/cmp$lvl.png" 2>/dev/null
+        pngs="$pngs $tmp/cmp$lvl.png"
+    done
+fi
+for p in $pngs; do
+    if "$FT" compare "$p" "$tmp/cmp.ppm" >"$tmp/out" 2>"$tmp/err" &&
+        grep -q 'inf (identical)' "$tmp/out"; then
+        ok
+    else
+        bad "compare $(basename "$p") cmp.ppm: $(cat "$tmp/err" "$tmp/out" | head -c 300)"
+    fi
+done
+cp "$tmp/cmp.png" "$tmp/broken.png"
+printf '\377' | dd of="$tmp/broken.png" bs=1 seek=60 conv=notrunc 2>/dev/null
+"$FT" compare "$tmp/broken.png" "$tmp/cmp.ppm" >/dev/null 2>"$tmp/err"
+rc=$?
+[ $rc -eq 2 ] && grep -q 'broken.png: bad' "$tmp/err" && ok ||
+    bad "compare of a damaged PNG: exit $rc, $(head -c 300 "$tmp/err")"
+
 # Compression: against zlib as pnmtopng uses it, on the same pixels.
 if command -v pnmtopng >/dev/null 2>&1; then
     "$FT" -q -W 640 -H 480 -o "$tmp/seed640.png" "$SEED" &&
