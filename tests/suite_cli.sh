@@ -42,7 +42,7 @@ expect 2 '--dither needs' -- "$FT" --dither -o "$tmp/x.ppm" "$SEED"
 expect 2 'format must be' -- "$FT" --format rgb999 "$SEED"
 expect 2 "write '-j 2'" -- "$FT" -j2 "$SEED"
 expect 2 "write '--width 640'" -- "$FT" --width=640 "$SEED"
-expect 2 'must end in .ppm or .png' -- "$FT" -q -o "$tmp/x.jpg" "$SEED"
+expect 2 'must end in .ppm or .png .or .raw, .bin or .h' -- "$FT" -q -o "$tmp/x.jpg" "$SEED"
 [ ! -e "$tmp/x.jpg" ] && ok || bad "a .jpg output was written"
 expect 2 'renders at 1 spp, so add -s' -- "$FT" -q --adaptive 8 -o "$tmp/x.ppm" "$SEED"
 cp "$SEED" "$tmp/same.ppm"
@@ -181,6 +181,46 @@ expect 2 'must end in .ppm or .png' -- "$FT" compare "$tmp/a.ppm" "$tmp/r.ppm" -
 expect 2 'must end in .ppm or .png' -- "$FT" compare "$tmp/a.ppm" "$tmp/r.ppm" --diff -
 expect 0 '' -- "$FT" compare "$tmp/a.ppm" "$tmp/r.ppm" --diff "$tmp/d1.PNG"
 head -c 4 "$tmp/d1.PNG" | od -An -c | grep -q 'P   N   G' && ok || bad "compare --diff x.PNG is not a PNG"
+
+# --- raw rows for displays (.raw, .bin, .h) -----------------------------
+R="-q -W 40 -H 30"
+# shellcheck disable=SC2086
+"$FT" $R --format rgb565le -o "$tmp/le.raw" "$SEED" &&
+    "$FT" $R --format rgb565be -o "$tmp/be.BIN" "$SEED" &&
+    "$FT" $R --format rgb565le -o "$tmp/le.ppm" "$SEED" &&
+    "$FT" $R --format rgb565be -o "$tmp/be.ppm" "$SEED" &&
+    "$FT" $R -o "$tmp/888.raw" "$SEED" &&
+    "$FT" $R --format rgb565be -o "$tmp/lcd_img.h" "$SEED" && ok ||
+    bad "a raw render failed"
+[ "$(stat -c %s "$tmp/le.raw")" -eq $((40 * 30 * 2)) ] && ok || bad ".raw 565 size"
+# The two byte orders differ exactly by swapping each pair of bytes.
+cmp -s "$tmp/le.raw" "$tmp/be.BIN" && bad "rgb565le and rgb565be raw files are equal" || ok
+dd if="$tmp/le.raw" conv=swab 2>/dev/null | cmp -s - "$tmp/be.BIN" && ok ||
+    bad "rgb565be raw is not rgb565le with its bytes swapped"
+# In a PPM both orders give the same picture: the documented expansion.
+cmp -s "$tmp/le.ppm" "$tmp/be.ppm" && ok || bad "565 PPMs differ by byte order"
+python3 - "$tmp/le.raw" "$tmp/le.ppm" <<'EOF2' && ok || bad ".raw 565 does not expand to the PPM"
+import sys
+raw, ppm = open(sys.argv[1], "rb").read(), open(sys.argv[2], "rb").read()
+px = ppm[len(b"P6\n40 30\n255\n"):]
+out = bytearray()
+for i in range(0, len(raw), 2):
+    v = raw[i] | raw[i + 1] << 8
+    r, g, b = v >> 11, (v >> 5) & 63, v & 31
+    out += bytes((r << 3 | r >> 2, g << 2 | g >> 4, b << 3 | b >> 2))
+sys.exit(0 if bytes(out) == px else 1)
+EOF2
+# rgb888 .raw is the PPM without its header.
+tail -c $((40 * 30 * 3)) "$tmp/a.ppm" | cmp -s - "$tmp/888.raw" && ok ||
+    bad "rgb888 .raw differs from the PPM's pixels"
+# The C array compiles and holds the .raw bytes.
+printf '#include <stdio.h>\n#include "lcd_img.h"\nint main(void) { fwrite(lcd_img, 1, sizeof lcd_img, stdout); return lcd_img_WIDTH != 40 || lcd_img_HEIGHT != 30; }\n' >"$tmp/use_h.c"
+if ${CC:-gcc} -std=c99 -Wall -Werror -I"$tmp" "$tmp/use_h.c" -o "$tmp/use_h" 2>"$tmp/err" &&
+    "$tmp/use_h" | cmp -s - "$tmp/be.BIN"; then
+    ok
+else
+    bad ".h array does not compile or differs from .raw: $(head -c 300 "$tmp/err")"
+fi
 
 # --- bad scenes (file:line:col and the line) -----------------------------
 scene_case() { # name, expected message regex, scene text

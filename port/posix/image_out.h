@@ -10,11 +10,19 @@
 typedef struct image_out image_out;
 
 /* What an output name asks for, from its extension (any letter case):
- * .ppm and .pnm are binary PPM, .png is PNG; "-" is PPM on stdout. */
+ * .ppm and .pnm are binary PPM, .png is PNG; "-" is PPM on stdout. PPM
+ * and PNG hold 8 bits a channel: RGB565 rows are expanded back, each
+ * channel's top bits repeated below it (r5 -> r5 << 3 | r5 >> 2), so both
+ * byte orders give the same picture. .raw and .bin are the rows exactly
+ * as the core emits them in the chosen format (3 bytes a pixel for
+ * rgb888, 2 in the chosen byte order for rgb565le/be), rows top to
+ * bottom, no header; .h is the same bytes as a C array. */
 typedef enum {
     IMAGE_UNKNOWN = 0,
     IMAGE_PPM,
-    IMAGE_PNG
+    IMAGE_PNG,
+    IMAGE_RAW,
+    IMAGE_C_ARRAY
 } image_kind;
 
 /* The kind of image a file name asks for; IMAGE_UNKNOWN for any other
