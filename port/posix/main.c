@@ -20,6 +20,7 @@
 #include "compare.h"
 #include "emit_c.h"
 #include "image_out.h"
+#include "progress.h"
 #include "ref_render.h"
 #include "rt_parse.h"
 #include "rt_render.h"
@@ -236,6 +237,7 @@ typedef struct {
     render_fn render;
     image_out *out;
     int progress;
+    progress_eta eta;
     int rows_done;
     struct timespec start;
     uint64_t rays_so_far;
@@ -263,7 +265,7 @@ static void show_progress(job *j, int final)
     int h = j->opt.height, done = j->rows_done;
     int bar = 30, fill = h ? done * bar / h : bar;
     double rate = el > 0 ? (double)j->rays_so_far / el : 0;
-    double left = done > 0 ? el * (h - done) / done : 0;
+    double left = final ? 0 : progress_eta_left(&j->eta, el);
     fprintf(stderr, "\r[%.*s%*s] %3d%% rows %d/%d  %.2f Mrays/s  %s %.1fs ",
             fill, "##############################", bar - fill, "",
             h ? done * 100 / h : 100, done, h, rate / 1e6,
@@ -279,6 +281,7 @@ static int on_row(void *ctx, int y, const uint8_t *row, size_t n)
     pthread_mutex_lock(&j->lock);
     rc = image_out_row(j->out, y, row, n);
     j->rows_done++;
+    progress_eta_row(&j->eta, y);
     if (j->progress)
         show_progress(j, 0);
     pthread_mutex_unlock(&j->lock);
@@ -410,6 +413,9 @@ static int render_scene(const cli *c, const rt_scene *scene)
         free(out_path);
         return 1;
     }
+    if (j.progress &&
+        progress_eta_init(&j.eta, scene, &j.opt, j.render) != 0)
+        j.progress = 0;
     clock_gettime(CLOCK_MONOTONIC, &j.start);
     j.status = RT_OK;
     if (c->jobs <= 1) {
@@ -470,6 +476,7 @@ static int render_scene(const cli *c, const rt_scene *scene)
         fprintf(stderr, "render_seconds %.6f\n", secs);
     }
     pthread_mutex_destroy(&j.lock);
+    progress_eta_free(&j.eta);
     free(out_path);
     return rc;
 }
