@@ -152,6 +152,8 @@ static void build_lengths(const uint32_t *freq_in, int n, int limit,
                     b = i;
                 }
             }
+            if (a < 0 || b < 0)
+                break; /* cannot happen: left > 1 nodes are alive */
             w[nodes] = w[a] + w[b];
             alive[nodes] = 1;
             parent[nodes] = -1;

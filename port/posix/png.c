@@ -184,6 +184,8 @@ int png_decode(const uint8_t *buf, size_t len, ppm_image *img, char *err,
     }
     if (!z)
         PNG_FAIL("PNG has no image data (IDAT)");
+    if (w == 0 || h == 0 || ctype < 0)
+        PNG_FAIL("PNG has no IHDR");
     size_t bpp = ctype == 2 ? 3 : 1, row = (size_t)w * bpp;
     size_t raw_n = (row + 1) * h;
     raw = malloc(raw_n);

@@ -63,7 +63,7 @@ int progress_eta_init(progress_eta *e, const rt_scene *s,
     p.height = (uint16_t)(h / PROGRESS_PROBE ? h / PROGRESS_PROBE : 1);
     p.spp = 1;
     p.adaptive = 0;
-    double *probe = malloc(sizeof *probe * p.height);
+    double *probe = calloc(p.height, sizeof *probe);
     double *w = malloc(sizeof *w * (size_t)h);
     uint8_t *buf = malloc(rt_buffer_bytes(&p));
     double sum = 0;
@@ -79,7 +79,7 @@ int progress_eta_init(progress_eta *e, const rt_scene *s,
                 sum += probe[y];
         }
     }
-    if (sum > 0) {
+    if (sum > 0 && probe && w) {
         /* Each row takes its probe row's time, plus a tenth of the mean
          * so that no row weighs nothing (a probe row can be too quick for
          * the clock). */
