@@ -3,6 +3,7 @@
 #   make            build the host renderer (build/posix/fixtrace)
 #   make run        render scenes/seed.scene to seed.ppm
 #   make test       build and run every test (tests/run.sh)
+#   make test-quick the unit tests and the quick host suites (QUICK_SUITES)
 #   make firmware BOARD=an385 [SCENE=... WIDTH=... HEIGHT=... SPP=...]
 #   make qemu     BOARD=an385 [same]     make size BOARD=an385
 #   make SANITIZE=1 test                 host tests under ASan + UBSan

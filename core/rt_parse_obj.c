@@ -275,11 +275,21 @@ static rt_status check_shape(rt_lex *p, const rt_lex_token *kw,
         if (o->kind != RT_SPHERE && o->h <= 0)
             return degenerate(p, &at[key_of(sp, F_H)], nm,
                               "height must be > 0");
+        /* rt_scene.c's RT_MAX_CONE_SLOPE, as docs/numerics.md states. */
+        if (o->kind == RT_CONE && fx_div(o->r, o->h) > FX_INT(64))
+            return degenerate(p, &at[key_of(sp, F_R)], nm,
+                              "radius / height must be at most 64");
     }
     if (rt_object_prepare(o) != RT_OK)
-        return degenerate(p, kw, nm, o->kind == RT_QUAD
-                                         ? "edges too short for Q16.16"
-                                         : "too thin or too flat for Q16.16");
+        return degenerate(p, o->kind == RT_QUAD ? &at[1]
+                             : o->kind == RT_BOX ? kw
+                                                 : &at[key_of(sp, F_R)],
+                          nm, o->kind == RT_QUAD
+                                  ? "edges too short for Q16.16"
+                                  : "too thin or too flat for Q16.16 "
+                                    "(the radius and half the height must "
+                                    "each be at least 1/65536 of the "
+                                    "other)");
     return RT_OK;
 }
 

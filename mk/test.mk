@@ -40,7 +40,7 @@ $(SCENE2POV): tests/scene2pov.c $(HOST_CORE_OBJ) | $(HOST_BUILD)/tests
 	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) -Icore $(HOST_LDFLAGS) $< \
 	    $(HOST_CORE_OBJ) -o $@ -lm
 
-.PHONY: test test-build random-test
+.PHONY: test test-build test-quick random-test
 test-build: $(FIXTRACE) $(TEST_BIN) $(RANDSCENE) $(SCENE2POV)
 
 # Many more random scenes than make test runs: make random-test
@@ -54,6 +54,14 @@ random-test: $(FIXTRACE) $(RANDSCENE)
 test: test-build
 	$(Q)HOST_BUILD=$(HOST_BUILD) SANITIZE=$(SANITIZE) MAKE="$(MAKE)" \
 	    bash tests/run.sh
+
+# The edit-compile loop: every unit binary and the quick host suites (no
+# QEMU, no fuzzing, no lint), under a minute on two cores. `make test`
+# before committing.
+QUICK_SUITES ?= cli png reference
+test-quick: test-build
+	$(Q)HOST_BUILD=$(HOST_BUILD) SANITIZE=$(SANITIZE) MAKE="$(MAKE)" \
+	    TEST_SUITES="$(QUICK_SUITES)" bash tests/run.sh
 
 .PHONY: update-checksums
 # Re-records the end-to-end render checksums after an intended image change.

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs every test part and adds up their "N passed, N failed[, N skipped]"
-# lines. Parts: each unit-test binary build/<host>/tests/test_*, then each
+# lines (TEST_SUITES picks suites; see below). Parts: each unit-test binary build/<host>/tests/test_*, then each
 # tests/suite_*.sh script. A part that exits non-zero or prints no summary
 # counts as one failure. A part that needs a missing tool prints
 # "SKIPPED: <why>" and counts a skip; under CI (CI=true) a skip is a failure,
@@ -55,8 +55,16 @@ for bin in "$HOST_BUILD"/tests/test_*; do
     [ -x "$bin" ] || continue
     run_part "$(basename "$bin")" "$bin"
 done
+# TEST_SUITES="cli png" runs only those suites (after every unit binary),
+# for make test-quick.
 for suite in tests/suite_*.sh; do
     [ -f "$suite" ] || continue
+    if [ -n "${TEST_SUITES:-}" ]; then
+        case " $TEST_SUITES " in
+        *" $(basename "$suite" .sh | sed 's/^suite_//') "*) ;;
+        *) continue ;;
+        esac
+    fi
     run_part "$(basename "$suite" .sh)" bash "$suite"
 done
 

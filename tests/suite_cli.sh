@@ -42,7 +42,7 @@ expect 2 '--dither needs' -- "$FT" --dither -o "$tmp/x.ppm" "$SEED"
 expect 2 'format must be' -- "$FT" --format rgb999 "$SEED"
 expect 2 "write '-j 2'" -- "$FT" -j2 "$SEED"
 expect 2 "write '--width 640'" -- "$FT" --width=640 "$SEED"
-expect 2 'must end in .ppm or .png' -- "$FT" -q -o "$tmp/x.jpg" "$SEED"
+expect 2 'must end in .ppm or .png .or .raw, .bin or .h' -- "$FT" -q -o "$tmp/x.jpg" "$SEED"
 [ ! -e "$tmp/x.jpg" ] && ok || bad "a .jpg output was written"
 expect 2 'renders at 1 spp, so add -s' -- "$FT" -q --adaptive 8 -o "$tmp/x.ppm" "$SEED"
 cp "$SEED" "$tmp/same.ppm"
@@ -100,6 +100,17 @@ head -c 2 "$tmp/a.ppm" | grep -q P6 && ok || bad "output is not a P6 PPM"
 expect 0 '' -- "$FT" -q -j 2 -W 40 -H 30 -o "$tmp/b.ppm" "$SEED"
 cmp -s "$tmp/a.ppm" "$tmp/b.ppm" && ok || bad "-j 2 differs from -j 1"
 "$FT" -q -W 40 -H 30 -o - "$SEED" >"$tmp/c.ppm" && cmp -s "$tmp/a.ppm" "$tmp/c.ppm" && ok || bad "-o - differs"
+# -o - on a terminal: refused before rendering, nothing binary shown.
+if command -v script >/dev/null 2>&1; then
+    script -qec "$FT -W 40 -H 30 -o - $SEED" /dev/null >"$tmp/tty.out" 2>&1
+    rc=$?
+    [ $rc -eq 2 ] && ok || bad "-o - on a terminal exited $rc, want 2"
+    grep -q 'stdout, which is a terminal' "$tmp/tty.out" && ok ||
+        bad "-o - on a terminal: no message ($(head -c 200 "$tmp/tty.out"))"
+    grep -q 'P6' "$tmp/tty.out" && bad "-o - wrote the PPM to a terminal" || ok
+else
+    echo "note: script(1) missing; -o - on a terminal not checked"
+fi
 expect 0 '' -- "$FT" -q -W 40 -H 30 -o "$tmp/keep.ppm" "$SEED"
 cmp -s "$tmp/a.ppm" "$tmp/keep.ppm" && ok || bad "a good render did not replace the old file"
 expect 0 '^primary_rays 1200$' -- "$FT" -q --stats -W 40 -H 30 -o "$tmp/s.ppm" "$SEED"
@@ -112,6 +123,16 @@ expect 0 '^rays_cut 0$' -- "$FT" -q --stats --trace-all -W 40 -H 30 -o "$tmp/t.p
 cmp -s "$tmp/s.ppm" "$tmp/t.ppm" && bad "--trace-all rendered the same bytes" || ok
 expect 0 '' -- "$FT" -q -W 40 -H 30 -o "$tmp/a.png" "$SEED"
 head -c 8 "$tmp/a.png" | od -An -tx1 | grep -q '89 50 4e 47 0d 0a 1a 0a' && ok || bad "PNG signature"
+# The extension picks the format in any letter case, as the name check
+# accepts it.
+for ext in Png pNG PNG; do
+    expect 0 '' -- "$FT" -q -W 40 -H 30 -o "$tmp/case.$ext" "$SEED"
+    cmp -s "$tmp/a.png" "$tmp/case.$ext" && ok || bad "-o x.$ext did not write the PNG"
+done
+for ext in PPM Pnm; do
+    expect 0 '' -- "$FT" -q -W 40 -H 30 -o "$tmp/case.$ext" "$SEED"
+    cmp -s "$tmp/a.ppm" "$tmp/case.$ext" && ok || bad "-o x.$ext did not write the PPM"
+done
 if command -v pngtopnm >/dev/null; then
     pngtopnm "$tmp/a.png" >"$tmp/a2.ppm" 2>/dev/null
     # netpbm writes "P6\n40 30\n255\n" as we do.
@@ -121,6 +142,85 @@ else
     skip=$((skip + 1))
 fi
 expect 0 '' -- "$FT" -q --format rgb565le --dither -W 40 -H 30 -o "$tmp/d.ppm" "$SEED"
+
+# --build-flags on a scene that needs every effect: an empty flags line on
+# stdout (still a valid $(...) list) and a comment saying so.
+cat >"$tmp/all.scene" <<'EOF2'
+camera eye 0 2 -8 look 0 0 0
+image 16 12 spp 4
+light 5 10 -5
+light -5 10 -5
+material a color 1 1 1 reflect 0.5 stripes x 0 0 0 1 bump 0.2 1
+material g color 1 1 1 transparency 0.9 ior 1.5
+sphere center 0 0 0 radius 1 material a
+quad corner -5 0 -5 edge1 0 0 10 edge2 10 0 0 material g
+box min 1 0 0 max 2 1 1 material a
+cylinder base -2 0 0 radius 0.5 height 1 material a
+cone base 2 0 2 radius 0.5 height 1 material a
+EOF2
+expect 0 '^# .*all.scene needs every effect at 4 spp' -- "$FT" --build-flags "$tmp/all.scene"
+[ "$(cat "$tmp/out")" = "" ] && ok || bad "--build-flags printed '$(cat "$tmp/out")' for a scene that needs every effect"
+expect 0 '' -- "$FT" --build-flags -s 1 "$tmp/all.scene"
+grep -qx -- '-DRT_NO_SUPERSAMPLING' "$tmp/out" && ok || bad "--build-flags -s 1: '$(cat "$tmp/out")'"
+grep -q 'every effect' "$tmp/err" && bad "--build-flags -s 1 said every effect" || ok
+
+# --- compare ------------------------------------------------------------
+"$FT" -q -W 40 -H 30 --reference -o "$tmp/r.ppm" "$SEED"
+cp "$tmp/a.ppm" "$tmp/a.keep"
+expect 1 'PSNR' -- "$FT" compare "$tmp/a.ppm" "$tmp/r.ppm" --min-psnr 99
+expect 0 'PSNR' -- "$FT" compare "$tmp/a.ppm" "$tmp/r.ppm" --diff "$tmp/d1.ppm"
+head -c 2 "$tmp/d1.ppm" | grep -q P6 && ok || bad "compare --diff x.ppm is not a PPM"
+# The diff never overwrites an input, by name or by another path to it.
+for d in "$tmp/a.ppm" "$tmp/r.ppm" "$tmp/./a.ppm"; do
+    expect 2 'is the input' -- "$FT" compare "$tmp/a.ppm" "$tmp/r.ppm" --diff "$d"
+done
+cmp -s "$tmp/a.ppm" "$tmp/a.keep" && ok || bad "compare --diff overwrote its input"
+# Names the render command refuses are refused here too.
+expect 2 'must end in .ppm or .png' -- "$FT" compare "$tmp/a.ppm" "$tmp/r.ppm" --diff "$tmp/d.jpg"
+[ ! -e "$tmp/d.jpg" ] && ok || bad "compare wrote a .jpg diff"
+expect 2 'must end in .ppm or .png' -- "$FT" compare "$tmp/a.ppm" "$tmp/r.ppm" --diff -
+expect 0 '' -- "$FT" compare "$tmp/a.ppm" "$tmp/r.ppm" --diff "$tmp/d1.PNG"
+head -c 4 "$tmp/d1.PNG" | od -An -c | grep -q 'P   N   G' && ok || bad "compare --diff x.PNG is not a PNG"
+
+# --- raw rows for displays (.raw, .bin, .h) -----------------------------
+R="-q -W 40 -H 30"
+# shellcheck disable=SC2086
+"$FT" $R --format rgb565le -o "$tmp/le.raw" "$SEED" &&
+    "$FT" $R --format rgb565be -o "$tmp/be.BIN" "$SEED" &&
+    "$FT" $R --format rgb565le -o "$tmp/le.ppm" "$SEED" &&
+    "$FT" $R --format rgb565be -o "$tmp/be.ppm" "$SEED" &&
+    "$FT" $R -o "$tmp/888.raw" "$SEED" &&
+    "$FT" $R --format rgb565be -o "$tmp/lcd_img.h" "$SEED" && ok ||
+    bad "a raw render failed"
+[ "$(stat -c %s "$tmp/le.raw")" -eq $((40 * 30 * 2)) ] && ok || bad ".raw 565 size"
+# The two byte orders differ exactly by swapping each pair of bytes.
+cmp -s "$tmp/le.raw" "$tmp/be.BIN" && bad "rgb565le and rgb565be raw files are equal" || ok
+dd if="$tmp/le.raw" conv=swab 2>/dev/null | cmp -s - "$tmp/be.BIN" && ok ||
+    bad "rgb565be raw is not rgb565le with its bytes swapped"
+# In a PPM both orders give the same picture: the documented expansion.
+cmp -s "$tmp/le.ppm" "$tmp/be.ppm" && ok || bad "565 PPMs differ by byte order"
+python3 - "$tmp/le.raw" "$tmp/le.ppm" <<'EOF2' && ok || bad ".raw 565 does not expand to the PPM"
+import sys
+raw, ppm = open(sys.argv[1], "rb").read(), open(sys.argv[2], "rb").read()
+px = ppm[len(b"P6\n40 30\n255\n"):]
+out = bytearray()
+for i in range(0, len(raw), 2):
+    v = raw[i] | raw[i + 1] << 8
+    r, g, b = v >> 11, (v >> 5) & 63, v & 31
+    out += bytes((r << 3 | r >> 2, g << 2 | g >> 4, b << 3 | b >> 2))
+sys.exit(0 if bytes(out) == px else 1)
+EOF2
+# rgb888 .raw is the PPM without its header.
+tail -c $((40 * 30 * 3)) "$tmp/a.ppm" | cmp -s - "$tmp/888.raw" && ok ||
+    bad "rgb888 .raw differs from the PPM's pixels"
+# The C array compiles and holds the .raw bytes.
+printf '#include <stdio.h>\n#include "lcd_img.h"\nint main(void) { fwrite(lcd_img, 1, sizeof lcd_img, stdout); return lcd_img_WIDTH != 40 || lcd_img_HEIGHT != 30; }\n' >"$tmp/use_h.c"
+if ${CC:-gcc} -std=c99 -Wall -Werror -I"$tmp" "$tmp/use_h.c" -o "$tmp/use_h" 2>"$tmp/err" &&
+    "$tmp/use_h" | cmp -s - "$tmp/be.BIN"; then
+    ok
+else
+    bad ".h array does not compile or differs from .raw: $(head -c 300 "$tmp/err")"
+fi
 
 # --- bad scenes (file:line:col and the line) -----------------------------
 scene_case() { # name, expected message regex, scene text
@@ -140,6 +240,15 @@ scene_case many_digits 'digits' "${CAM}${MAT}sphere center 0.1234567890123456789
 scene_case missing_radius 'radius' "${CAM}${MAT}sphere center 0 0 0 material m\n"
 scene_case nul_byte '' "${CAM}${MAT}sphere center 0 0\0 0 radius 1 material m\n"
 scene_case zero_radius '' "${CAM}${MAT}sphere center 0 0 0 radius 0 material m\n"
+# Shape errors point at the field at fault and state the limit.
+shape_case() { # name, expected line:col, message regex, object line
+    printf '%b' "${CAM}${MAT}$4\n" >"$tmp/$1.scene"
+    expect 2 "$1.scene:$2: error: $3" -- "$FT" -q -o "$tmp/$1.ppm" "$tmp/$1.scene"
+}
+shape_case flat_cone 3:17 'degenerate cone: radius / height must be at most 64' \
+    'cone base 0 0 0 radius 10 height 0.1 material m'
+shape_case thin_cylinder 3:21 'degenerate cylinder: too thin or too flat for Q16.16 .the radius and half the height' \
+    'cylinder base 0 0 0 radius 0.00002 height 30000 material m'
 head -c 3000 /dev/urandom | tr -d '\n' >"$tmp/garbage.scene"
 expect 2 'garbage.scene:1:[0-9]+: error' -- "$FT" -q -o "$tmp/g.ppm" "$tmp/garbage.scene"
 : >"$tmp/empty.scene"

@@ -13,7 +13,13 @@
 #   M3 and RV32 (docs/porting.md);
 # - README.md shows the gallery picture of every scene in scenes/ (a
 #   picture that differs from a fresh render is only noted), and every
-#   relative link in README.md and docs/*.md points at a file.
+#   relative link in README.md and docs/*.md points at a file;
+# - every measured figure the docs quote matches the tool that measures
+#   it (the accuracy table, the adaptive ray counts and --build-flags are
+#   measured again here) or the table that tool wrote (the QEMU figures of
+#   port/baremetal/README.md and docs/bench.md, quoted in README.md,
+#   docs/effects.md, docs/embedding.md and docs/accuracy.md); and every
+#   build/posix-*/fixtrace a command block runs is built in that block.
 set -u
 cd "$(dirname "$0")/.."
 FT=${FIXTRACE:-build/posix/fixtrace}
@@ -348,7 +354,8 @@ for scene in scenes/*.scene; do
     name=$(basename "$scene" .scene)
     [ -f "docs/img/$name.png" ] || continue
     "$FT" -q -W 320 -H 240 -s 4 -o "$tmp/g.png" "$scene" 2>/dev/null &&
-        ! cmp -s "$tmp/g.png" "docs/img/$name.png" && stale="$stale $name"
+        ! "$FT" compare "$tmp/g.png" "docs/img/$name.png" 2>/dev/null |
+        grep -q 'inf (identical)' && stale="$stale $name"
 done
 [ -z "$stale" ] ||
     echo "note: docs/img is out of date for:$stale (run make gallery)"
@@ -368,6 +375,164 @@ done >"$tmp/links"
 grep -v '^ok$' "$tmp/links"
 pass=$((pass + $(grep -c '^ok$' "$tmp/links")))
 fail=$((fail + $(grep -c '^FAILED' "$tmp/links")))
+
+# --- Measured figures ----------------------------------------------------------
+# Every figure the docs quote from a measurement is either printed by the
+# tool that measures it (run here when it is quick) or checked against the
+# table that tool wrote. The slow tools (QEMU) write the board tables of
+# port/baremetal/README.md and docs/bench.md; every other page's copy of
+# those figures is checked against them, so regenerating a table without
+# the pages that quote it fails here, naming the page.
+nocomma() { echo "$1" | tr -d ','; }
+same_num() { # a b: equal as numbers (commas ignored)
+    awk -v a="$(nocomma "$1")" -v b="$(nocomma "$2")" 'BEGIN { exit !(a + 0 == b + 0 && a != "") }'
+}
+# board_fig BOARD MODE FIELD: from the table tools/boards_table.sh writes
+# (fields: instructions, ipp, stack, flash, ram).
+board_fig() {
+    awk -F'|' -v b="$1" -v m="$2" -v f="$3" '
+        { gsub(/ /, "", $2); gsub(/ /, "", $3) }
+        $2 == b && $3 == m {
+            i = 8; if (f == "instructions") i = 4; if (f == "ipp") i = 5
+            if (f == "stack") i = 6; if (f == "flash") i = 7
+            v = $i; gsub(/ /, "", v); print v; exit }' port/baremetal/README.md
+}
+check_fig() { # what, quoted, measured
+    if [ -z "$3" ]; then
+        bad "$1: no measured figure to check against"
+    elif same_num "$2" "$3"; then
+        ok
+    else
+        bad "$1 says '$2', the measurement says '$3'"
+    fi
+}
+
+# README's board table: each row against its board's tables row.
+boards=$(cd mk/boards && ls *.mk | sed 's/\.mk$//')
+for b in $boards; do
+    row=$(grep -E "^\| $b \(" README.md | head -n 1)
+    if [ -z "$row" ]; then
+        bad "README.md's board table has no row for $b"
+        continue
+    fi
+    IFS='|' read -r _ _ ipp flash ram stack _ <<<"$row"
+    check_fig "README.md $b instructions/pixel" "$ipp" "$(board_fig "$b" tables ipp)"
+    check_fig "README.md $b flash" "$flash" "$(board_fig "$b" tables flash)"
+    check_fig "README.md $b RAM" "$ram" "$(board_fig "$b" tables ram)"
+    check_fig "README.md $b stack" "$stack" "$(board_fig "$b" tables stack)"
+done
+m3=$(board_fig an385 tables ipp)
+m0=$(board_fig m0 tables ipp)
+ratio=$(awk -v v="$(nocomma "$m3")" 'BEGIN { printf "%.1f", v / 1000 }')
+if awk -v v="$(nocomma "$m3")" 'BEGIN { exit !(v > 1000) }'; then
+    grep -q "seed scene is still ${ratio}x over the 1,000" README.md && ok ||
+        bad "README.md should say the seed is ${ratio}x over the 1,000 instructions/pixel ($m3)"
+fi
+# The README's sample `make qemu` output is consistent in itself.
+awk '/^    instructions [0-9]+$/ {i = $2} /^    pixels [0-9]+$/ {p = $2}
+     /^    instructions_per_pixel / {q = $2}
+     END { exit !(p > 0 && sprintf("%.1f", i / p) == q) }' README.md && ok ||
+    bad "README.md's sample make qemu output: instructions / pixels is not its instructions_per_pixel"
+
+# docs/bench.md (tools/bench.sh) measures the seed on the M3 and M0 again.
+bench_seed=$(grep -E '^\| seed \|' docs/bench.md | head -n 1)
+IFS='|' read -r _ _ b3 b0 _ <<<"$bench_seed"
+check_fig "docs/bench.md seed an385" "$b3" "$m3"
+check_fig "docs/bench.md seed m0" "$b0" "$m0"
+fx=$(sed -nE 's/^\| fixed point, Cortex-M3 \| ([0-9.,]+) .*/\1/p' docs/bench.md)
+check_fig "docs/bench.md fixed point, Cortex-M3" "$fx" "$m3"
+t1=$(sed -nE 's/^\| seed <= 1,000 instructions\/pixel on the M3 \| ([0-9.,]+) .*/\1/p' docs/bench.md)
+check_fig "docs/bench.md targets: seed" "$t1" "$m3"
+sd=$(sed -nE 's/^\| reference, soft double, Cortex-M3 \| ([0-9.]+) .*/\1/p' docs/bench.md)
+m4f=$(sed -nE 's/^\| reference, float32 on the FPU, Cortex-M4F \| ([0-9.]+) .*/\1/p' docs/bench.md)
+x_sd=$(awk -v a="$sd" -v b="$(nocomma "$m3")" 'BEGIN { if (b > 0) printf "%.1f", a / b }')
+grep -qE "^\| >= 10x fewer instructions than soft double \(M3\) \| ${x_sd}x " docs/bench.md && ok ||
+    bad "docs/bench.md targets: soft double / fixed should read ${x_sd}x"
+grep -q "soft-double reference: \*\*[a-z]*\*\*: ${x_sd}x (default)" docs/accuracy.md && ok ||
+    bad "docs/accuracy.md should give the soft-double ratio ${x_sd}x (docs/bench.md)"
+x_m4=$(awk -v a="$m4f" -v b="$(nocomma "$m3")" 'BEGIN { if (b > 0) printf "%.2f", a / b }')
+m4c=$(echo "$m4f" | sed -E ':a; s/^([0-9]+)([0-9]{3})/\1,\2/; ta')
+grep -q "$m4c instructions per" docs/accuracy.md && grep -q "pixel, ${x_m4}x the fixed-point default" docs/accuracy.md && ok ||
+    bad "docs/accuracy.md should give the M4F float32 cost $m4c, ${x_m4}x (docs/bench.md)"
+m3c=$(echo "$m3" | sed -E ':a; s/^([0-9]+)([0-9]{3})/\1,\2/; ta')
+m0c=$(echo "$m0" | sed -E ':a; s/^([0-9]+)([0-9]{3})/\1,\2/; ta')
+grep -q "against $m3c per pixel" docs/accuracy.md && grep -q "against $m0c)" docs/accuracy.md && ok ||
+    bad "docs/accuracy.md should compare fast with the default's $m3c (M3) and $m0c (M0)"
+
+# docs/effects.md's pruning table: the seed rows are the board table's
+# an385 and m0 rows; the pruned diffuse cost is docs/bench.md's.
+eff_row() { grep -E "^\| $1 \| $2 \| $3[ ,]" docs/effects.md | head -n 1; }
+for spec in "an385 M3 tables pruned" "an385 M3 text full" "m0 M0 tables pruned" "m0 M0 text full"; do
+    set -- $spec
+    IFS='|' read -r _ _ _ _ flash ins ipp _ <<<"$(eff_row seed "$2 \([a-z0-9]*\)" "$4")"
+    check_fig "docs/effects.md seed $2 $4 flash" "${flash%% (*}" "$(board_fig "$1" "$3" flash)"
+    check_fig "docs/effects.md seed $2 $4 instructions" "$ins" "$(board_fig "$1" "$3" instructions)"
+    check_fig "docs/effects.md seed $2 $4 per pixel" "$ipp" "$(board_fig "$1" "$3" ipp)"
+done
+bench_diff=$(grep -E '^\| diffuse \|' docs/bench.md | head -n 1)
+IFS='|' read -r _ _ d3 d0 _ <<<"$bench_diff"
+IFS='|' read -r _ _ _ _ _ _ e3 _ <<<"$(eff_row diffuse 'M3 \(an385\)' pruned)"
+IFS='|' read -r _ _ _ _ _ _ e0 _ <<<"$(eff_row diffuse 'M0 \(m0\)' pruned)"
+check_fig "docs/effects.md diffuse M3 pruned per pixel" "$e3" "$d3"
+check_fig "docs/effects.md diffuse M0 pruned per pixel" "$e0" "$d0"
+
+# docs/embedding.md quotes the tables rows' stack.
+s385=$(board_fig an385 tables stack)
+smb=$(board_fig microbit tables stack)
+grep -q "$s385 bytes on the an385 and $smb" docs/embedding.md && ok ||
+    bad "docs/embedding.md should give the an385 and micro:bit stack as $s385 and $smb"
+
+# README's accuracy table: printed again by the tool that made it.
+if FIXTRACE="$FT" bash tools/reference_table.sh >"$tmp/acc" 2>"$tmp/err"; then
+    tail -n +3 "$tmp/acc" | while IFS= read -r line; do
+        grep -qxF -- "$line" README.md && echo ok ||
+            echo "FAILED: README.md's accuracy table lacks '$line' (tools/reference_table.sh)"
+    done >"$tmp/accres"
+    grep -v '^ok$' "$tmp/accres"
+    pass=$((pass + $(grep -c '^ok$' "$tmp/accres")))
+    fail=$((fail + $(grep -c '^FAILED' "$tmp/accres")))
+else
+    bad "tools/reference_table.sh failed: $(head -c 300 "$tmp/err")"
+fi
+
+# docs/effects.md's adaptive table: its 320x240 ray counts, measured.
+if FIXTRACE="$FT" bash tools/adaptive_table.sh --rays >"$tmp/ad" 2>"$tmp/err"; then
+    while IFS= read -r line; do
+        grep -qF -- "$line" docs/effects.md && ok ||
+            bad "docs/effects.md's adaptive table lacks '$line' (tools/adaptive_table.sh)"
+    done <"$tmp/ad"
+else
+    bad "tools/adaptive_table.sh --rays failed: $(head -c 300 "$tmp/err")"
+fi
+
+# docs/effects.md's --build-flags examples, as the tool prints them.
+awk '/^    \$ build\/posix\/fixtrace --build-flags / { s = $NF; getline; print s "|" $0 }' \
+    docs/effects.md >"$tmp/bf"
+[ -s "$tmp/bf" ] && ok || bad "docs/effects.md shows no --build-flags example"
+while IFS='|' read -r scene want; do
+    got=$("$FT" --build-flags "$scene" 2>/dev/null)
+    [ "$got" = "$(echo "$want" | sed 's/^ *//')" ] && ok ||
+        bad "docs/effects.md: --build-flags $scene prints '$got', the page shows '$want'"
+done <"$tmp/bf"
+
+# Every build/posix-*/fixtrace a command block runs is built in that block
+# (build/posix is what `make` builds).
+for md in README.md docs/*.md port/baremetal/README.md; do
+    awk -v md="$md" '
+        /^```/ || !/^    / { if (!/^    /) delete built; next }
+        { for (i = 1; i <= NF; i++) if ($i ~ /^HOST_BUILD=build\/posix-/) {
+              d = $i; sub(/^HOST_BUILD=/, "", d); built[d] = 1 } }
+        match($0, /build\/posix-[A-Za-z0-9_-]+\/fixtrace/) {
+            d = substr($0, RSTART, RLENGTH); sub(/\/fixtrace$/, "", d)
+            if (!(d in built)) print "FAILED: " md ": " d "/fixtrace is run but not built in its block: " $0 }
+    ' "$md"
+done >"$tmp/blocks"
+if [ -s "$tmp/blocks" ]; then
+    cat "$tmp/blocks"
+    fail=$((fail + $(wc -l <"$tmp/blocks")))
+else
+    ok
+fi
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

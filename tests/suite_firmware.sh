@@ -149,6 +149,15 @@ run_board() {
             res "FAILED: $b bad scene: the PRUNE=1 build failed without" \
                 "the parser's message: $(head -c 300 "$tmp/$b.log")"
         fi
+        # A scene that does not exist: said so, before anything is built.
+        if fw qemu SCENE="$tmp/nosuch.scene"; then
+            res "FAILED: $b missing scene: the build succeeded"
+        elif grep -q "SCENE=$tmp/nosuch.scene: no such file" "$tmp/$b.log" &&
+            ! grep -qE 'does not parse|^  CC ' "$tmp/$b.log"; then
+            res ok
+        else
+            res "FAILED: $b missing scene: $(head -c 300 "$tmp/$b.log")"
+        fi
         if fw firmware SCENE="$tmp/bad.scene" PRUNE=0; then
             want_rc=2 run_qemu "bad scene" "$TIMEOUT" \
                 SCENE="$tmp/bad.scene" PRUNE=0
@@ -164,6 +173,20 @@ run_board() {
         fi
         ;;
     microbit)
+        # A row wider than the board's buffer is refused by make, before
+        # anything is built, whether WIDTH says it or the scene does.
+        printf 'image 400 30\ncamera eye 0 0 -5 look 0 0 0\n' >"$tmp/wide.scene"
+        for args in "WIDTH=400 HEIGHT=10" "SCENE=$tmp/wide.scene"; do
+            # shellcheck disable=SC2086
+            if fw firmware $args; then
+                res "FAILED: $b $args: the build succeeded"
+            elif grep -q 'renders rows of at most 320 pixels' "$tmp/$b.log" &&
+                ! grep -q '^  CC ' "$tmp/$b.log"; then
+                res ok
+            else
+                res "FAILED: $b $args: $(head -c 300 "$tmp/$b.log")"
+            fi
+        done
         # Everything, stack included, in 16 KB of RAM, in the mode that
         # needs the most: the text parsed on the device into an rt_scene in
         # RAM. The seed scene at 320x240 (which also checks the stack

@@ -5,11 +5,11 @@
 #   - netpbm's pngtopnm (libpng), which checks every chunk CRC;
 #   - a small Python decoder below (zlib for the inflate and the Adler-32,
 #     its own chunk walk, CRC-32 check and scanline unfiltering).
-# Sizes cover 1x1, rows that straddle the 65535-byte stored deflate blocks
-# (300x300: 270,300 bytes of scanlines in 5 blocks), data that fills blocks
-# exactly (28x771 and 28x1542: 85-byte scanlines, 65,535 and 131,070
-# bytes, so no partial last block), one byte past a full block (28x772)
-# and the widest row (4096x3), in every row format.
+# Sizes cover 1x1, a noisy image large enough for several Huffman blocks
+# (300x300 with bumps), sizes that once filled stored blocks exactly
+# (28x771, 28x772, 28x1542), the widest row (4096x3), in every row format.
+# The PNG must also be compressed for real: the 640x480 seed scene must be
+# no larger than 1.25 times what netpbm's pnmtopng (zlib) writes for it.
 # With neither decoder present the suite prints SKIPPED and counts a skip.
 set -u
 cd "$(dirname "$0")/.."
@@ -143,6 +143,7 @@ check 1x1 -W 1 -H 1 "$SEED"
 check 2x1 -W 2 -H 1 "$SEED"
 check 40x30 -W 40 -H 30 "$SEED"
 check 300x300 -W 300 -H 300 "$SEED"
+check 300x300-bumps -W 300 -H 300 scenes/textures.scene
 check 28x771-one-full-block -W 28 -H 771 "$SEED"
 check 28x772-one-byte-over -W 28 -H 772 "$SEED"
 check 28x1542-two-full-blocks -W 28 -H 1542 "$SEED"
@@ -150,6 +151,48 @@ check 4096x3-widest -W 4096 -H 3 scenes/diffuse.scene
 check 97x61-spp4 -W 97 -H 61 -s 4 scenes/glass.scene
 check 64x48-rgb565le -W 64 -H 48 --format rgb565le "$SEED"
 check 64x48-rgb565be-dither -W 64 -H 48 --format rgb565be --dither "$SEED"
+
+# fixtrace compare reads PNG: its own, and zlib's (pnmtopng, stored and
+# compressed); a damaged PNG is refused with the reason, exit 2.
+"$FT" -q -W 64 -H 48 -o "$tmp/cmp.ppm" "$SEED" &&
+    "$FT" -q -W 64 -H 48 -o "$tmp/cmp.png" "$SEED"
+pngs="$tmp/cmp.png"
+if command -v pnmtopng >/dev/null 2>&1; then
+    for lvl in 0 1 9; do
+        pnmtopng -compression $lvl "$tmp/cmp.ppm" >"$tmp/cmp$lvl.png" 2>/dev/null
+        pngs="$pngs $tmp/cmp$lvl.png"
+    done
+fi
+for p in $pngs; do
+    if "$FT" compare "$p" "$tmp/cmp.ppm" >"$tmp/out" 2>"$tmp/err" &&
+        grep -q 'inf (identical)' "$tmp/out"; then
+        ok
+    else
+        bad "compare $(basename "$p") cmp.ppm: $(cat "$tmp/err" "$tmp/out" | head -c 300)"
+    fi
+done
+cp "$tmp/cmp.png" "$tmp/broken.png"
+printf '\377' | dd of="$tmp/broken.png" bs=1 seek=60 conv=notrunc 2>/dev/null
+"$FT" compare "$tmp/broken.png" "$tmp/cmp.ppm" >/dev/null 2>"$tmp/err"
+rc=$?
+[ $rc -eq 2 ] && grep -q 'broken.png: bad' "$tmp/err" && ok ||
+    bad "compare of a damaged PNG: exit $rc, $(head -c 300 "$tmp/err")"
+
+# Compression: against zlib as pnmtopng uses it, on the same pixels.
+if command -v pnmtopng >/dev/null 2>&1; then
+    "$FT" -q -W 640 -H 480 -o "$tmp/seed640.png" "$SEED" &&
+        "$FT" -q -W 640 -H 480 -o "$tmp/seed640.ppm" "$SEED"
+    ours=$(stat -c %s "$tmp/seed640.png")
+    theirs=$(pnmtopng "$tmp/seed640.ppm" 2>/dev/null | wc -c)
+    echo "seed 640x480: fixtrace PNG $ours bytes, pnmtopng $theirs bytes"
+    if [ "$theirs" -gt 0 ] && [ $((ours * 4)) -le $((theirs * 5)) ]; then
+        ok
+    else
+        bad "the 640x480 seed PNG is $ours bytes, over 1.25 x pnmtopng's $theirs"
+    fi
+else
+    echo "note: pnmtopng missing; PNG size not compared"
+fi
 
 # A directory in place of the output: the write fails cleanly.
 mkdir "$tmp/dir.png"

@@ -806,7 +806,11 @@ static void test_object_errors(void)
         RT_ERR_DEGENERATE, 3, 26, "degenerate cone: height must be > 0");
     /* rt_object_prepare() refuses what the parser's own checks let by: */
     BAD(CAM RED "cone base 0 0 0 radius 1000 height 0.001 material red",
-        RT_ERR_DEGENERATE, 3, 1, "degenerate cone: too thin or too flat");
+        RT_ERR_DEGENERATE, 3, 17,
+        "degenerate cone: radius / height must be at most 64");
+    BAD(CAM RED "cone base 0 0 0 radius 0.00002 height 30000 material red",
+        RT_ERR_DEGENERATE, 3, 17,
+        "degenerate cone: too thin or too flat for Q16.16 (the radius");
     /* Capacity: RT_MAX_OBJECTS objects parse, one more does not. */
     size_t cap = 64 * (RT_MAX_OBJECTS + 4);
     char *buf = malloc(cap);

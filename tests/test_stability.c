@@ -1326,8 +1326,8 @@ static void case_degenerate_quad(void)
 }
 
 /* Cylinders and cones with zero radius or height, and cones flatter than
- * radius / height = 64: "degenerate cone: too thin or too flat for
- * Q16.16". The steepest accepted slope is exactly 64. A height of one ulp
+ * radius / height = 64: "degenerate cone: radius / height must be at most
+ * 64". The steepest accepted slope is exactly 64. A height of one ulp
  * is refused the same way (its half height, the frame's unit, rounds to
  * 0); two ulps are accepted. */
 static void case_degenerate_upright(void)
@@ -1341,7 +1341,8 @@ static void case_degenerate_upright(void)
     expect_reject(CAM "cone base 0 0 0 radius 0 height 1 material m\n",
                   RT_ERR_DEGENERATE, "degenerate cone: radius must be > 0");
     expect_reject(CAM "cone base 0 0 0 radius 65 height 1 material m\n",
-                  RT_ERR_DEGENERATE, "degenerate cone: too thin or too flat");
+                  RT_ERR_DEGENERATE,
+                  "degenerate cone: radius / height must be at most 64");
     parse(CAM "cone base 0 0 0 radius 64 height 1 material m\n", &scene_a);
     expect_reject(CAM "cylinder base 0 0 0 radius 0.0000153 "
                       "height 0.0000153 material m\n",

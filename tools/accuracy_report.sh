@@ -266,10 +266,11 @@ The M4F float32 image is byte-identical to the M3 soft-float one: ${M4SAME}.
 ## Reproducing a row
 
     make accuracy                                   # everything, this page
+    make -j2 build/posix/fixtrace
     make -j2 HOST_BUILD=build/posix-acc0 RT_DEFS=-DRT_ACCURACY=0 build/posix-acc0/fixtrace
     build/posix-acc0/fixtrace -W ${W} -H ${H} -o fast.ppm scenes/seed.scene
-    build/posix-acc1/fixtrace --reference -W ${W} -H ${H} -o ref.ppm scenes/seed.scene
-    build/posix-acc1/fixtrace compare fast.ppm ref.ppm
+    build/posix/fixtrace --reference -W ${W} -H ${H} -o ref.ppm scenes/seed.scene
+    build/posix/fixtrace compare fast.ppm ref.ppm
     build/posix-acc0/fixtrace --stats -W ${W} -H ${H} -o fast.ppm scenes/seed.scene   # render_seconds
     make qemu BOARD=an385 FW_BUILD=build/accuracy/fw-an385-acc0 \\
         FW_DEFS=-DRT_ACCURACY=0 SCENE=scenes/seed.scene WIDTH=${W} HEIGHT=${H} SPP=1

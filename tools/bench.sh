@@ -98,7 +98,7 @@ if [ $QUICK = 0 ]; then
     echo "Reproduce: \`build/posix/fixtrace -q [-j N] [--reference] -W 640 -H 480 -s 4 -o x.ppm scenes/seed.scene\`."
     sqrt_m3=$(bash bench/fxbench/run.sh 2>&1 | awk '/cortex-m3/{m=1} /cortex-m0/{m=0} m && $1 == "sqrt" {print $2}')
     echo
-    echo "## Targets (issue 9)"
+    echo "## Targets"
     echo
     echo "| target | measured | met |"
     echo "|---|---|---|"

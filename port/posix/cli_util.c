@@ -2,10 +2,11 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
-#include <strings.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "cli_util.h"
+#include "image_out.h"
 
 int cli_error(const char *fmt, ...)
 {
@@ -52,21 +53,20 @@ int cli_unknown_option(const char *opt)
     return cli_error("unknown option '%s' (see fixtrace --help)", opt);
 }
 
-static int ends_with_ci(const char *s, const char *suffix)
-{
-    size_t n = strlen(s), m = strlen(suffix);
-    return n >= m && strcasecmp(s + n - m, suffix) == 0;
-}
-
 int cli_check_output(const char *out, const char *scene)
 {
     struct stat a, b;
-    if (strcmp(out, "-") == 0)
+    if (strcmp(out, "-") == 0) {
+        if (isatty(STDOUT_FILENO))
+            return cli_error("-o - writes a binary image to stdout, which "
+                             "is a terminal; redirect it (> NAME.ppm, or a "
+                             "pipe) or name a file with -o NAME.png");
         return 0;
-    if (!ends_with_ci(out, ".ppm") && !ends_with_ci(out, ".pnm") &&
-        !ends_with_ci(out, ".png"))
+    }
+    if (image_kind_of(out) == IMAGE_UNKNOWN)
         return cli_error("cannot write '%s': the output name must end in "
-                         ".ppm or .png (or be - for PPM on stdout)", out);
+                         ".ppm or .png (or .raw, .bin or .h for the rows "
+                         "as they are; or be - for PPM on stdout)", out);
     if (stat(out, &a) == 0 && stat(scene, &b) == 0 && a.st_dev == b.st_dev &&
         a.st_ino == b.st_ino)
         return cli_error("the output '%s' is the scene file itself; name "

@@ -32,8 +32,9 @@ int cli_long(const char *opt, const char *val, long lo, long hi, long *out);
  * "--width=640"); returns 2. */
 int cli_unknown_option(const char *opt);
 
-/* Checks an output name: "-", or ending in .ppm, .pnm or .png, and not the
- * scene file itself. Prints why not and returns 2; 0 if fine. */
+/* Checks an output name: "-" (unless stdout is a terminal), or ending in
+ * a name image_kind_of() knows, and not the scene file itself. Prints why not and
+ * returns 2; 0 if fine. */
 int cli_check_output(const char *out, const char *scene);
 
 /* Reads a whole file (at most CLI_MAX_SCENE_BYTES) into a malloc'ed

@@ -2,7 +2,10 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include "compare.h"
+#include "image_out.h"
+#include "rt_render.h"
 
 static int absdiff(uint8_t a, uint8_t b) { return a > b ? a - b : b - a; }
 
@@ -121,14 +124,16 @@ int compare_heatmap(const ppm_image *a, const ppm_image *b, ppm_image *out)
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: fixtrace compare A.ppm B.ppm [--diff DIFF.ppm] "
+            "usage: fixtrace compare A.ppm B.ppm [--diff DIFF.ppm|DIFF.png] "
             "[--min-psnr DB]\n"
             "                        [--max-bad PERCENT] "
             "[--max-interior-outliers N]\n"
-            "  Compares two binary PPM images of the same size; B is the\n"
-            "  reference (edges are judged on it).\n"
+            "  Compares two images of the same size, each a binary PPM or\n"
+            "  an 8-bit RGB or grey PNG (fixtrace's own, or most others);\n"
+            "  B is the reference (edges are judged on it).\n"
             "  --diff FILE    write a heat map of the error (black = equal,\n"
-            "                 then blue, green, yellow, red)\n"
+            "                 then blue, green, yellow, red), as PPM or as\n"
+            "                 PNG by the name; never over A or B\n"
             "  --min-psnr DB  fail (exit 1) below this PSNR\n"
             "  --max-bad P    fail when more than P %% of pixels are off by "
             "more than %d/255\n"
@@ -161,6 +166,51 @@ typedef struct {
     double min_psnr, max_bad, max_interior;
     int has_psnr, has_bad, has_interior;
 } compare_args;
+
+/* The diff image's name, as the render command checks its output: a
+ * known image extension, not stdout (the metrics go there), and not one of
+ * the images compared. Returns 0, or 2 after printing what is wrong. */
+static int check_diff_name(const compare_args *a)
+{
+    struct stat d, in;
+    if (strcmp(a->diff, "-") == 0 || image_kind_of(a->diff) == IMAGE_UNKNOWN) {
+        fprintf(stderr, "fixtrace compare: cannot write the diff image "
+                "'%s': its name must end in .ppm or .png\n", a->diff);
+        return 2;
+    }
+    if (stat(a->diff, &d) != 0)
+        return 0;
+    for (int i = 0; i < 2; i++) {
+        if (stat(a->path[i], &in) == 0 && in.st_dev == d.st_dev &&
+            in.st_ino == d.st_ino) {
+            fprintf(stderr, "fixtrace compare: the diff image '%s' is the "
+                    "input %s itself; name the diff with --diff NAME.png\n",
+                    a->diff, a->path[i]);
+            return 2;
+        }
+    }
+    return 0;
+}
+
+/* Writes img to path (PPM or PNG, by its name) atomically. Returns 0, or
+ * -1 with a message in err. */
+static int save_image(const char *path, const ppm_image *img, char *err,
+                      size_t errlen)
+{
+    image_out *o = image_out_open(path, img->width, img->height, RT_RGB888,
+                                  0, err, errlen);
+    if (!o)
+        return -1;
+    size_t stride = (size_t)img->width * 3;
+    for (int y = 0; y < img->height; y++) {
+        if (image_out_row(o, y, img->data + (size_t)y * stride, stride)) {
+            snprintf(err, errlen, "internal error writing '%s'", path);
+            image_out_abort(o);
+            return -1;
+        }
+    }
+    return image_out_commit(o, err, errlen);
+}
 
 /* Returns 0, or 2 after printing what is wrong. */
 static int parse_args(int argc, char **argv, compare_args *a)
@@ -227,7 +277,7 @@ static int parse_args(int argc, char **argv, compare_args *a)
         usage(stderr);
         return 2;
     }
-    return 0;
+    return a->diff ? check_diff_name(a) : 0;
 }
 
 static void print_result(const compare_args *a, const compare_result *r)
@@ -312,7 +362,7 @@ int compare_main(int argc, char **argv)
             fprintf(stderr, "fixtrace compare: "
                             "out of memory for the diff image\n");
             rc = 2;
-        } else if (ppm_save(args.diff, &heat, err, sizeof err)) {
+        } else if (save_image(args.diff, &heat, err, sizeof err)) {
             fprintf(stderr, "fixtrace compare: "
                             "cannot write the diff image: %s\n",
                     err);

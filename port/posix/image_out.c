@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -10,18 +11,34 @@
 #include "rt_render.h"
 
 struct image_out {
-    int w, h, format, png, to_stdout;
-    uint8_t *rgb;   /* w * h * 3 */
+    int w, h, format, to_stdout;
+    image_kind kind;
+    size_t bpp;     /* bytes a pixel in rgb: 3, or the row format's */
+    uint8_t *rgb;   /* w * h * bpp: RGB888, or the rows as given */
     char *target;   /* final name */
     char *tmp;      /* temporary name */
     FILE *f;
     char err[200];
 };
 
-static int ends_with(const char *s, const char *suffix)
+static int ends_with_ci(const char *s, const char *suffix)
 {
     size_t n = strlen(s), m = strlen(suffix);
-    return n >= m && strcmp(s + n - m, suffix) == 0;
+    return n >= m && strcasecmp(s + n - m, suffix) == 0;
+}
+
+image_kind image_kind_of(const char *path)
+{
+    if (strcmp(path, "-") == 0 || ends_with_ci(path, ".ppm") ||
+        ends_with_ci(path, ".pnm"))
+        return IMAGE_PPM;
+    if (ends_with_ci(path, ".png"))
+        return IMAGE_PNG;
+    if (ends_with_ci(path, ".raw") || ends_with_ci(path, ".bin"))
+        return IMAGE_RAW;
+    if (ends_with_ci(path, ".h"))
+        return IMAGE_C_ARRAY;
+    return IMAGE_UNKNOWN;
 }
 
 image_out *image_out_open(const char *path, int w, int h, int format,
@@ -36,9 +53,13 @@ image_out *image_out_open(const char *path, int w, int h, int format,
     o->w = w;
     o->h = h;
     o->format = format;
-    o->png = ends_with(path, ".png") || ends_with(path, ".PNG");
+    o->kind = image_kind_of(path);
     o->to_stdout = strcmp(path, "-") == 0;
-    o->rgb = malloc((size_t)w * (size_t)h * 3);
+    o->bpp = (o->kind == IMAGE_RAW || o->kind == IMAGE_C_ARRAY) &&
+                     format != RT_RGB888
+                 ? 2
+                 : 3;
+    o->rgb = malloc((size_t)w * (size_t)h * o->bpp);
     if (!o->rgb) {
         snprintf(err, errlen, "out of memory for a %dx%d image", w, h);
         free(o);
@@ -86,9 +107,9 @@ int image_out_row(image_out *o, int y, const uint8_t *row, size_t n)
 {
     if (y < 0 || y >= o->h)
         return -1;
-    uint8_t *dst = o->rgb + (size_t)y * (size_t)o->w * 3;
-    if (o->format == RT_RGB888) {
-        if (n != (size_t)o->w * 3)
+    uint8_t *dst = o->rgb + (size_t)y * (size_t)o->w * o->bpp;
+    if (o->format == RT_RGB888 || o->bpp == 2) { /* kept as given */
+        if (n != (size_t)o->w * o->bpp)
             return -1;
         memcpy(dst, row, n);
         return 0;
@@ -108,10 +129,53 @@ int image_out_row(image_out *o, int y, const uint8_t *row, size_t n)
     return 0;
 }
 
+/* The C identifier for an array written to path: its base name without
+ * the extension, other characters as '_'. */
+static void c_name(const char *path, char *name, size_t cap)
+{
+    const char *base = strrchr(path, '/');
+    base = base ? base + 1 : path;
+    size_t n = 0;
+    if (!((*base >= 'A' && *base <= 'Z') || (*base >= 'a' && *base <= 'z')))
+        name[n++] = 'f';
+    for (const char *p = base; *p && *p != '.' && n + 1 < cap; p++) {
+        int ok = (*p >= 'A' && *p <= 'Z') || (*p >= 'a' && *p <= 'z') ||
+                 (*p >= '0' && *p <= '9');
+        name[n++] = ok ? *p : '_';
+    }
+    name[n] = '\0';
+}
+
+static int write_c_array(image_out *o, FILE *f)
+{
+    static const char *const fmt[] = {"rgb888", "rgb565le", "rgb565be"};
+    char name[64];
+    size_t n = (size_t)o->w * (size_t)o->h * o->bpp;
+    c_name(o->target, name, sizeof name);
+    if (fprintf(f, "/* Written by fixtrace: %dx%d pixels, %s (%u bytes a "
+                "pixel), rows top to bottom. */\n#include <stdint.h>\n"
+                "#define %s_WIDTH %d\n#define %s_HEIGHT %d\n"
+                "static const uint8_t %s[%zu] = {\n",
+                o->w, o->h, fmt[o->format <= 2 ? o->format : 0],
+                (unsigned)o->bpp, name, o->w, name, o->h, name, n) < 0)
+        return -1;
+    for (size_t i = 0; i < n; i++)
+        if (fprintf(f, "%s0x%02x,%s", i % 12 ? " " : "    ", o->rgb[i],
+                    i % 12 == 11 || i + 1 == n ? "\n" : "") < 0)
+            return -1;
+    return fputs("};\n", f) < 0 ? -1 : 0;
+}
+
 static int write_image(image_out *o, FILE *f)
 {
-    if (o->png && !o->to_stdout)
+    if (!o->to_stdout && o->kind == IMAGE_PNG)
         return png_write(f, o->rgb, o->w, o->h);
+    if (!o->to_stdout && o->kind == IMAGE_C_ARRAY)
+        return write_c_array(o, f);
+    if (!o->to_stdout && o->kind == IMAGE_RAW) {
+        size_t n = (size_t)o->w * (size_t)o->h * o->bpp;
+        return fwrite(o->rgb, 1, n, f) == n ? 0 : -1;
+    }
     if (fprintf(f, "P6\n%d %d\n255\n", o->w, o->h) < 0)
         return -1;
     size_t n = (size_t)o->w * (size_t)o->h * 3;

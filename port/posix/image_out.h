@@ -9,9 +9,30 @@
 
 typedef struct image_out image_out;
 
+/* What an output name asks for, from its extension (any letter case):
+ * .ppm and .pnm are binary PPM, .png is PNG; "-" is PPM on stdout. PPM
+ * and PNG hold 8 bits a channel: RGB565 rows are expanded back, each
+ * channel's top bits repeated below it (r5 -> r5 << 3 | r5 >> 2), so both
+ * byte orders give the same picture. .raw and .bin are the rows exactly
+ * as the core emits them in the chosen format (3 bytes a pixel for
+ * rgb888, 2 in the chosen byte order for rgb565le/be), rows top to
+ * bottom, no header; .h is the same bytes as a C array. */
+typedef enum {
+    IMAGE_UNKNOWN = 0,
+    IMAGE_PPM,
+    IMAGE_PNG,
+    IMAGE_RAW,
+    IMAGE_C_ARRAY
+} image_kind;
+
+/* The kind of image a file name asks for; IMAGE_UNKNOWN for any other
+ * extension. */
+image_kind image_kind_of(const char *path);
+
 /* Opens an output of w x h pixels whose rows come in `format`
- * (rt_format). path "-" means stdout (PPM). A name ending in .png writes
- * PNG, anything else binary PPM (P6). NULL with a message in err. */
+ * (rt_format). path "-" means stdout (PPM). The kind follows
+ * image_kind_of(); an unknown one is written as binary PPM (P6), so check
+ * the name first. NULL with a message in err. */
 image_out *image_out_open(const char *path, int w, int h, int format,
                           int any_order, char *err, size_t errlen);
 

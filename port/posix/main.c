@@ -20,6 +20,7 @@
 #include "compare.h"
 #include "emit_c.h"
 #include "image_out.h"
+#include "progress.h"
 #include "ref_render.h"
 #include "rt_parse.h"
 #include "rt_render.h"
@@ -59,14 +60,22 @@ static void usage(FILE *f)
 "                     [--max-interior-outliers N]\n"
 "\n"
 "DESCRIPTION\n"
-"    Renders the scene file SCENE (see docs/scene-format.md) and writes a\n"
-"    binary PPM, or a PNG when the output name ends in .png. The image is\n"
-"    written to a temporary file beside the output and renamed into place\n"
-"    only when the render succeeds.\n"
+"    Renders the scene file SCENE (see docs/scene-format.md) and writes\n"
+"    the image in the format its name ends with (any letter case):\n"
+"      .ppm .pnm  binary PPM (P6), 8 bits a channel\n"
+"      .png       PNG, 8 bits a channel\n"
+"      .raw .bin  the rows exactly as --format makes them, no header: 3\n"
+"                 bytes a pixel (rgb888) or 2 in the chosen byte order\n"
+"                 (rgb565le, rgb565be), ready for a display\n"
+"      .h         the same bytes as a C array (static const uint8_t\n"
+"                 NAME[], with NAME_WIDTH and NAME_HEIGHT)\n"
+"    The image is written to a temporary file beside the output and\n"
+"    renamed into place only when the render succeeds.\n"
 "\n"
 "OPTIONS\n"
 "    -o, --output FILE   output image (default: SCENE's name with .ppm, in\n"
 "                        the current directory); - writes PPM to stdout\n"
+"                        (a pipe or a file, never a terminal)\n"
 "    -W, --width N       image width, 1..4096 (default: the scene's)\n"
 "    -H, --height N      image height, 1..4096 (default: the scene's)\n"
 "    -s, --spp N         samples per pixel: 1, 4, 9 or 16 (default: the\n"
@@ -85,12 +94,17 @@ static void usage(FILE *f)
 "        --reference     render with the double-precision reference\n"
 "        --stats         print ray counters and timing on stderr\n"
 "        --build-flags   print the -DRT_NO_* flags that remove every effect\n"
-"                        the scene (at this spp) does not need, and exit\n"
+"                        the scene (at this spp) does not need, and exit;\n"
+"                        when it needs them all, the line is empty and a\n"
+"                        '# ... needs every effect' comment goes to stderr\n"
 "        --emit-c        print the parsed scene as a C constant (for\n"
 "                        firmware without the parser), and exit\n"
-"        --format F      rows as rgb888 (default), rgb565le or rgb565be;\n"
-"                        565 output is expanded back to 8 bits a channel,\n"
-"                        in the PPM or PNG\n"
+"        --format F      rows as rgb888 (default), rgb565le or rgb565be.\n"
+"                        In a PPM or PNG, 565 rows are expanded back to 8\n"
+"                        bits a channel (the top bits repeated below:\n"
+"                        r5 -> r5 << 3 | r5 >> 2), so both byte orders\n"
+"                        give the same file; .raw, .bin and .h keep the\n"
+"                        565 bytes in the order chosen\n"
 "        --dither        ordered dithering for the 565 formats\n"
 "    -q, --quiet         no progress bar, no messages on success\n"
 "    -h, --help          this text\n"
@@ -104,6 +118,7 @@ static void usage(FILE *f)
 "    fixtrace scenes/seed.scene                  writes seed.ppm\n"
 "    fixtrace -W 640 -H 480 -s 4 -o seed.png scenes/seed.scene\n"
 "    fixtrace --reference -o ref.ppm scenes/seed.scene\n"
+"    fixtrace -W 160 -H 128 --format rgb565be --dither -o lcd.raw SCENE\n"
 "    fixtrace compare seed.ppm ref.ppm --diff diff.ppm --min-psnr 40\n",
         f);
 }
@@ -222,6 +237,7 @@ typedef struct {
     render_fn render;
     image_out *out;
     int progress;
+    progress_eta eta;
     int rows_done;
     struct timespec start;
     uint64_t rays_so_far;
@@ -249,7 +265,7 @@ static void show_progress(job *j, int final)
     int h = j->opt.height, done = j->rows_done;
     int bar = 30, fill = h ? done * bar / h : bar;
     double rate = el > 0 ? (double)j->rays_so_far / el : 0;
-    double left = done > 0 ? el * (h - done) / done : 0;
+    double left = final ? 0 : progress_eta_left(&j->eta, el);
     fprintf(stderr, "\r[%.*s%*s] %3d%% rows %d/%d  %.2f Mrays/s  %s %.1fs ",
             fill, "##############################", bar - fill, "",
             h ? done * 100 / h : 100, done, h, rate / 1e6,
@@ -265,6 +281,7 @@ static int on_row(void *ctx, int y, const uint8_t *row, size_t n)
     pthread_mutex_lock(&j->lock);
     rc = image_out_row(j->out, y, row, n);
     j->rows_done++;
+    progress_eta_row(&j->eta, y);
     if (j->progress)
         show_progress(j, 0);
     pthread_mutex_unlock(&j->lock);
@@ -396,6 +413,9 @@ static int render_scene(const cli *c, const rt_scene *scene)
         free(out_path);
         return 1;
     }
+    if (j.progress &&
+        progress_eta_init(&j.eta, scene, &j.opt, j.render) != 0)
+        j.progress = 0;
     clock_gettime(CLOCK_MONOTONIC, &j.start);
     j.status = RT_OK;
     if (c->jobs <= 1) {
@@ -456,6 +476,7 @@ static int render_scene(const cli *c, const rt_scene *scene)
         fprintf(stderr, "render_seconds %.6f\n", secs);
     }
     pthread_mutex_destroy(&j.lock);
+    progress_eta_free(&j.eta);
     free(out_path);
     return rc;
 }
@@ -479,6 +500,11 @@ static int print_build_flags(const cli *c, const rt_scene *scene)
         }
     }
     printf("\n");
+    /* The flags line stays empty so that $(fixtrace --build-flags) stays
+     * a valid list; the note goes beside it. */
+    if (!*sep && !c->quiet)
+        fprintf(stderr, "# %s needs every effect at %u spp: no RT_NO_* "
+                "flag applies\n", c->scene_path, (unsigned)spp);
     return 0;
 }
 

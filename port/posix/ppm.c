@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include "png.h"
 #include "ppm.h"
 
 static void seterr(char *err, size_t errlen, const char *fmt, ...)
@@ -100,13 +101,10 @@ int ppm_parse(const uint8_t *buf, size_t len, ppm_image *img, char *err,
     long w, h, maxval;
     memset(img, 0, sizeof *img);
     if (len >= 4 && buf[0] == 0x89 && buf[1] == 'P' && buf[2] == 'N' &&
-        buf[3] == 'G') {
-        seterr(err, errlen, "a PNG, but compare reads PPM only: render "
-               "with -o NAME.ppm");
-        return -1;
-    }
+        buf[3] == 'G')
+        return png_decode(buf, len, img, err, errlen);
     if (len < 2 || buf[0] != 'P' || buf[1] != '6') {
-        seterr(err, errlen, "not a binary PPM (the file must start with P6)");
+        seterr(err, errlen, "neither a binary PPM (P6) nor a PNG");
         return -1;
     }
     if (len > 2 && !is_space(buf[2]) && buf[2] != '#') {

@@ -27,13 +27,14 @@ int ppm_alloc(ppm_image *img, int width, int height);
 /* Releases the pixels and zeroes *img; safe on a zeroed or freed image. */
 void ppm_free(ppm_image *img);
 
-/* Parses a P6 file held in memory. Returns 0 with *img filled (the caller
+/* Parses a P6 file held in memory; a PNG (by its signature) goes to
+ * png_decode() instead, so every reader takes both. Returns 0 with *img filled (the caller
  * frees it), or -1 with a NUL-terminated reason in err[0..errlen) and
  * *img zeroed. Bytes after the pixel data are ignored. */
 int ppm_parse(const uint8_t *buf, size_t len, ppm_image *img, char *err,
               size_t errlen);
 
-/* Reads a P6 file. As ppm_parse(); the message names the file. */
+/* Reads a P6 or PNG file. As ppm_parse(); the message names the file. */
 int ppm_read(const char *path, ppm_image *img, char *err, size_t errlen);
 
 /* Writes the P6 header for a width x height image ("P6\nW H\n255\n").
