@@ -37,6 +37,7 @@ include mk/test.mk
 -include mk/bench.mk
 -include mk/docs.mk
 -include mk/accuracy.mk
+-include mk/oled.mk
 
 .PHONY: all clean print-%
 all: $(FIXTRACE)

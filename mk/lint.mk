@@ -75,7 +75,7 @@ LINT_ARCH_m33 := --target=arm-none-eabi -mcpu=cortex-m33 -mthumb \
     -mfloat-abi=soft
 LINT_ARCH_rv32 := --target=riscv32-unknown-elf -march=rv32imac -mabi=ilp32
 lint_bm_arch = $(if $(filter %_rv32.c,$1),rv32,$(if $(filter \
-    %_an505.c,$1),m33,$(if $(filter %_an385.c %_microbit.c \
+    %_an505.c,$1),m33,$(if $(filter %_an385.c %_microbit.c %_lm3s6965.c \
     %_cortexm.c,$1),arm,arm rv32)))
 
 LINT_HOST_LOGS := $(LINT_HOST_SRC:%=$(LINT_BUILD)/%.log)

@@ -79,13 +79,14 @@ static void log_status(const char *what, rt_status st)
     port_log("\n");
 }
 
-/* Hands a finished row straight to the output; the row buffer is ours
- * again when port_write() returns. */
+/* Hands a finished row straight to the output, and to the panel on a board
+ * with one; the row buffer is ours again when they return. */
 static int send_row(void *ctx, int y, const uint8_t *row, size_t nbytes)
 {
     (void)ctx;
-    (void)y;
     port_write(row, nbytes);
+    if (FW_DISPLAY)
+        port_display_row(y, row, (unsigned)(nbytes / 3));
     return 0;
 }
 
@@ -190,5 +191,7 @@ int main(void)
                  "linker script)\n");
         return PORT_EXIT_STACK;
     }
+    if (FW_DISPLAY)
+        port_display_done();
     return PORT_EXIT_OK;
 }

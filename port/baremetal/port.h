@@ -53,6 +53,25 @@ uint64_t port_cycles(void);
  * for this board (see port/baremetal/README.md). */
 uint64_t port_cycles_to_insns(uint64_t cycles);
 
+/* ---- A display (boards built with -DFW_DISPLAY=1 only) ----------------- */
+
+/* 1 on a board with a panel (FW_CAPS in mk/boards/<board>.mk): main.c then
+ * also shows every row there, and the board defines the two functions
+ * below (board_lm3s6965.c). */
+#ifndef FW_DISPLAY
+#define FW_DISPLAY 0
+#endif
+
+/* Shows RGB888 row y (width pixels) on the panel, as the row callback
+ * gets it; the row is the caller's again on return. Rows come in order
+ * from y = 0; what does not fit the panel is left out. */
+void port_display_row(int y, const uint8_t *rgb, unsigned width);
+
+/* Called after a successful run, once the figures are logged: says so on
+ * the text channel and keeps the picture up until the host has taken it
+ * (the board may never return). */
+void port_display_done(void);
+
 /* ---- Helpers shared by the boards and the firmware --------------------- */
 
 /* Opens the semihosting channels (semihost.c, which also defines

@@ -20,6 +20,9 @@ void fault_bus(void);
 void fault_usage(void);
 void fault_secure(void);
 void fault_other(void);
+/* A board that uses the SysTick interrupt defines this (board_lm3s6965.c);
+ * on the others it is fault_other. */
+void systick_handler(void) __attribute__((weak, alias("fault_other")));
 
 typedef void (*vector_fn)(void);
 
@@ -38,7 +41,7 @@ __attribute__((section(".vectors"), used)) static const vector_fn
         fault_other,  /* DebugMonitor */
         0,
         fault_other,  /* PendSV */
-        fault_other   /* SysTick */
+        systick_handler
 };
 
 void reset_handler(void)
