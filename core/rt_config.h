@@ -1,10 +1,28 @@
 /*
  * fixtrace configuration: every build-time option and capacity limit, each
- * with its default. Override any of them with -DNAME=value; nothing else in
- * the tree defines these names.
+ * with its default. Override any of them in the configuration file (below)
+ * or with -DNAME=value; nothing else in the tree defines these names.
  */
 #ifndef RT_CONFIG_H
 #define RT_CONFIG_H
+
+/* ---- The user's configuration file (docs/embedding.md) -----------------
+ * Found the way LVGL finds lv_conf.h: -DRT_CONFIG_FILE='"my_conf.h"' names
+ * it; otherwise "fixtrace_conf.h" is included when it is on the include
+ * path (__has_include, GCC 5+ and clang, any -std), or always with
+ * -DRT_USE_CONF_FILE for a compiler without __has_include. It holds plain
+ * `#define NAME value` lines for the options below; every file of the core
+ * and of the application must see the same one (rt_scene.h checks the
+ * capacities at link time). */
+#if defined(RT_CONFIG_FILE)
+#include RT_CONFIG_FILE
+#elif defined(RT_USE_CONF_FILE)
+#include "fixtrace_conf.h"
+#elif defined(__has_include)
+#if __has_include("fixtrace_conf.h")
+#include "fixtrace_conf.h"
+#endif
+#endif
 
 /* ---- Capacities (they size the caller's rt_scene) ---------------------- */
 

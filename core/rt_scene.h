@@ -14,6 +14,28 @@
 #include "rt_config.h"
 #include "fx_vec.h"
 
+/* ---- Configuration check -------------------------------------------------
+ * The capacities size rt_scene, so an application compiled with other
+ * values than the core would hand it a scene of another layout. To make
+ * that a link error instead of memory corruption, every entry point that
+ * takes an rt_scene is linked under a name carrying them: with the default
+ * capacities rt_render_rows is rt_render_rows_cfg_o128_m32_l4 (objects,
+ * materials, lights). A mismatch reads, for example,
+ *     undefined reference to `rt_render_rows_cfg_o16_m12_l2'
+ * meaning: this file was compiled with RT_MAX_OBJECTS=16,
+ * RT_MAX_MATERIALS=12 and RT_MAX_LIGHTS=2, the core with other values
+ * (`nm` on the core lists its _cfg_ names). The capacities must be plain
+ * decimal numbers. */
+#define RT_CFG_NAME_(f, o, m, l) f##_cfg_o##o##_m##m##_l##l
+#define RT_CFG_NAME(f, o, m, l) RT_CFG_NAME_(f, o, m, l)
+#define RT_CFG(f) RT_CFG_NAME(f, RT_MAX_OBJECTS, RT_MAX_MATERIALS,      \
+                              RT_MAX_LIGHTS)
+#define rt_scene_init RT_CFG(rt_scene_init)
+#define rt_parse RT_CFG(rt_parse)
+#define rt_render_rows RT_CFG(rt_render_rows)
+#define rt_options_from_scene RT_CFG(rt_options_from_scene)
+#define rt_scene_features RT_CFG(rt_scene_features)
+
 /* Status codes: 0 is success, failures are negative. */
 typedef enum {
     RT_OK = 0,

@@ -68,6 +68,7 @@ SR_CFLAGS := -std=c99 -O2 -g $(SR_CPU) -ffreestanding -ffunction-sections \
 SR_LDFLAGS := $(SR_CPU) -nostdlib -T linker/an385.ld -Wl,--gc-sections \
     -Wl,-Map=$(SR_BUILD)/softref.map -Wl,--no-warn-rwx-segments
 SR_PORT_SRC := port/baremetal/common.c port/baremetal/semihost.c \
+    port/baremetal/out_semihost.c \
     port/baremetal/libc.c port/baremetal/board_an385.c \
     port/baremetal/startup_cortexm.c
 SR_FP_SRC := bench/softref/main.c bench/softref/libm.c port/posix/ref_render.c \

@@ -70,3 +70,10 @@ minimal: $(MIN_ELF) fw-host-tool
 # What fixtrace costs, written to docs/bench.md (tools/bench.sh).
 bench:
 	$(Q)MAKE="$(MAKE)" bash tools/bench.sh
+
+.PHONY: stack
+# The painted stack high-water mark per scene and board, and per level of
+# depth, measured under QEMU into docs/stack.md, which the docs quote
+# (tools/stack_table.sh; STACK_JOBS=n builds at once, default 2).
+stack:
+	$(Q)MAKE="$(MAKE)" bash tools/stack_table.sh

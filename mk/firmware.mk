@@ -31,6 +31,15 @@
 # A FW_DEFS that changes the parsed values (-DRT_ACCURACY=n,
 # -DRT_MAX_DEPTH=n) gets a host tool built with it, under build/posix-fw*.
 #
+# OUTPUT=semihost (the default) sends the image and the figures through
+# semihosting (port/baremetal/out_semihost.c); OUTPUT=uart sends both on
+# the board's UART, the image in a checked frame (out_uart.c), which
+# `make qemu` captures from QEMU's serial port into build/<b>/uart.bin and
+# hands to `fixtrace receive`. SEMIHOST=0 (with OUTPUT=uart) makes the
+# firmware stop in a loop instead of leaving through semihosting, for a
+# board without a debugger. The core objects are shared between the two;
+# the image is build/<b>/fixtrace-uart.elf.
+#
 # PRUNE=0 builds every effect, embeds the scene text (port/baremetal/
 # scene.S) and parses it on the device, as the host does: any scene, and
 # the device reports a scene that does not parse. FW_BUILD (default
@@ -46,6 +55,8 @@ FW_APP ?= main
 FW_BRINGUP ?= 0
 FW_DEFS ?=
 PRUNE ?= 1
+OUTPUT ?= semihost
+SEMIHOST ?= 1
 QEMU_TIMEOUT ?= 300
 
 ARM_PREFIX ?= arm-none-eabi-
@@ -74,7 +85,8 @@ endif
 FW_BUILD ?= build/$(BOARD)
 FW_CC := $(FW_PREFIX)gcc
 FW_SIZE := $(FW_PREFIX)size
-FW_NAME := $(if $(filter bringup,$(FW_APP)),bringup,fixtrace)
+FW_NAME := $(if $(filter bringup,$(FW_APP)),bringup,fixtrace)$(if $(filter \
+    uart,$(OUTPUT)),-uart)
 FW_ELF := $(FW_BUILD)/$(FW_NAME).elf
 # FW_PRUNING: 1 for a renderer built for SCENE alone (PRUNE=1), which
 # carries the scene as tables (FW_TABLES_C) instead of its text (scene.S).
@@ -100,8 +112,9 @@ FW_CFLAGS := -std=c99 $(FW_OPT) -g $(FW_CPU) -ffreestanding \
 FW_LDFLAGS := $(FW_CPU) -nostdlib -T $(FW_LD) -Wl,--gc-sections \
     -Wl,-Map=$(FW_BUILD)/$(FW_NAME).map -Wl,--no-warn-rwx-segments
 
+FW_OUT_SRC := port/baremetal/out_$(OUTPUT).c
 FW_PORT_SRC := port/baremetal/common.c port/baremetal/semihost.c \
-    port/baremetal/libc.c $(FW_BOARD_SRC)
+    $(FW_OUT_SRC) port/baremetal/libc.c $(FW_BOARD_SRC)
 FW_TABLES_C := $(FW_BUILD)/scene_tables.c
 # The scene parser's files, which a pruned build leaves out.
 FW_PARSER_SRC := core/rt_parse.c core/rt_parse_obj.c core/rt_lex.c \
@@ -137,6 +150,8 @@ FW_ROW_LIMIT = $(call fw_cap_limit,FW_ROW_PIXELS)
 fw-check-board:
 	@$(if $(FW_LD),true,echo "Unknown BOARD=$(BOARD); the boards are" \
 	    "$(FW_BOARDS) (mk/boards/*.mk)" >&2; exit 1)
+	@case '$(OUTPUT)' in semihost|uart) ;; *) echo "OUTPUT must be" \
+	    "semihost or uart, got '$(OUTPUT)'" >&2; exit 1;; esac
 	@command -v $(FW_CC) >/dev/null || { echo "$(FW_CC) not found; install" \
 	    "it with: apt-get install --no-install-recommends $(FW_CC_PKG)" >&2; \
 	    exit 1; }
@@ -163,6 +178,7 @@ $(FW_CONFIG): fw-force | fw-check-board
 	    '#define FW_WIDTH $(WIDTH)' '#define FW_HEIGHT $(HEIGHT)' \
 	    '#define FW_SPP $(SPP)' '#define FW_ADAPTIVE $(ADAPTIVE)' \
 	    '#define FW_BRINGUP $(FW_BRINGUP)' \
+	    '#define FW_SEMIHOST_EXIT $(if $(filter 0,$(SEMIHOST)),0,1)' \
 	    '#define FW_SCENE_TABLES $(if $(FW_PRUNING),1,0)' \
 	    | $(call fw_update,$@)
 
@@ -260,6 +276,7 @@ $(FW_BUILD)/core/%.o: core/%.c $(FW_FLAGS_STAMP) $(FW_EFFECTS)
 $(FW_BUILD)/port/baremetal/libc.o: FW_EXTRA := -fno-tree-loop-distribute-patterns
 $(FW_BUILD)/port/baremetal/main.o: $(FW_CONFIG)
 $(FW_BUILD)/port/baremetal/bringup.o: $(FW_CONFIG)
+$(FW_BUILD)/port/baremetal/out_uart.o: $(FW_CONFIG)
 
 $(FW_BUILD)/port/baremetal/%.o: port/baremetal/%.c $(FW_FLAGS_STAMP) \
                                 $(FW_EFFECTS)
@@ -292,14 +309,30 @@ FW_RISCV_BOARD = $(filter $(RISCV_PREFIX),$(FW_PREFIX))
 FW_CC_PKG = $(if $(FW_RISCV_BOARD),gcc-riscv64-unknown-elf,gcc-arm-none-eabi)
 FW_QEMU_PKG = $(if $(FW_RISCV_BOARD),qemu-system-misc,qemu-system-arm)
 
-qemu: $(FW_ELF)
+# OUTPUT=uart: QEMU's first serial port goes to uart.bin (a file chardev:
+# -serial stdio would make stdout non-blocking, PLATFORM.md), which
+# `fixtrace receive` checks and turns into out.ppm; the device's text
+# arrives on the same line and goes to qemu.log.
+FW_UART_BIN := $(FW_BUILD)/uart.bin
+FW_QEMU_RUN = $(if $(filter uart,$(OUTPUT)),$(subst -serial none,-chardev \
+    file$(comma)id=fwuart$(comma)path=$(FW_UART_BIN) -serial \
+    chardev:fwuart,$(FW_QEMU)),$(FW_QEMU))
+comma := ,
+
+qemu: $(FW_ELF) $(if $(filter uart,$(OUTPUT)),fw-host-tool)
 	$(Q)command -v $(firstword $(FW_QEMU)) >/dev/null || { \
 	    echo "$(firstword $(FW_QEMU)) not found; install it with:" \
 	    "apt-get install --no-install-recommends $(FW_QEMU_PKG)" >&2; \
 	    exit 1; }
-	$(Q)rc=0; timeout $(QEMU_TIMEOUT) $(FW_QEMU) \
+	$(Q)rc=0; rm -f $(FW_UART_BIN); timeout $(QEMU_TIMEOUT) $(FW_QEMU_RUN) \
 	    -icount shift=$(FW_ICOUNT),align=off,sleep=off -kernel $< \
 	    </dev/null >$(FW_BUILD)/out.ppm 2>$(FW_BUILD)/qemu.log || rc=$$?; \
+	$(if $(filter uart,$(OUTPUT)),if [ $$rc -ne 124 ]; then \
+	    rm -f $(FW_BUILD)/out.ppm; \
+	    $(FW_FIXTRACE) receive -o $(FW_BUILD)/out.ppm <$(FW_UART_BIN) \
+	        2>>$(FW_BUILD)/qemu.log || { [ $$rc -ne 0 ] || rc=1; \
+	        echo "fixtrace receive: no valid frame in $(FW_UART_BIN)" \
+	            >>$(FW_BUILD)/qemu.log; }; fi;) \
 	cat $(FW_BUILD)/qemu.log >&2; \
 	if [ $$rc -eq 124 ]; then \
 	    echo "qemu: no exit after $(QEMU_TIMEOUT) s (hang?)" >&2; \

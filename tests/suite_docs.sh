@@ -11,6 +11,8 @@
 #   from the parser's own error messages) has an example there;
 # - port/baremetal/board_template.c, switched on, compiles for Cortex-M0,
 #   M3 and RV32 (docs/porting.md);
+# - every stack figure the docs quote is docs/stack.md's (make stack), and
+#   README.md's time per frame follows the measured instructions/pixel;
 # - README.md shows the gallery picture of every scene in scenes/ (a
 #   picture that differs from a fresh render is only noted), and every
 #   relative link in README.md and docs/*.md points at a file;
@@ -332,6 +334,66 @@ for v in on off; do
     grep -qE "^shadows $v$" "$tmp/statements" && ok ||
         bad "docs/scene-format.md has no example of 'shadows $v'"
 done
+
+# --- Measured figures: docs/stack.md and the frame-time table ---------------
+# Every stack figure the docs quote (marked N<!-- stack BOARD KEY -->, the
+# stack columns of the boards tables, README.md's example output) is the
+# one in docs/stack.md's data block, which `make stack` measures; the data
+# covers every scene and board; README.md's frame-time table follows the
+# measured instructions per pixel (tools/frame_time.sh --check).
+data=$(sed -n '/^```$/,/^```$/p' docs/stack.md 2>/dev/null |
+    grep -E '^(stack|fit|example) ')
+if [ -z "$data" ]; then
+    bad "docs/stack.md has no data block (run make stack)"
+else
+    ok
+    for b in $(cd mk/boards && ls *.mk | sed 's/\.mk$//'); do
+        for sc in scenes/*.scene; do
+            echo "$data" | grep -q "^stack $b $(basename "$sc" .scene) " && ok ||
+                bad "docs/stack.md has no figure for $sc on $b (run make stack)"
+        done
+    done
+    for f in README.md docs/*.md port/baremetal/README.md linker/template.ld; do
+        echo "$data" | awk -v f="$f" '
+            FNR == NR { if ($1 == "example") ex[$3] = $4; else v[$2 " " $3] = $4
+                        if ($1 == "stack" && $3 == "seed") seed[$2] = $4; next }
+            function num(x) { gsub(/[ ,]/, "", x); return x }
+            function check(what, got, want) {
+                if (want == "") printf "FAILED: %s:%d: %s has no figure in docs/stack.md\n", f, FNR, what
+                else if (got != want) printf "FAILED: %s:%d: %s is %s, docs/stack.md says %s (run make stack)\n", f, FNR, what, got, want
+                else print "ok" }
+            { line = $0
+              n = gsub(/<!-- stack /, "&", line)
+              k = gsub(/[0-9]<!-- stack /, "&", line)
+              if (n > k) printf "FAILED: %s:%d: a stack quote without a number (run make stack)\n", f, FNR
+              while (match(line, /[0-9][0-9,]*<!-- stack [^ ]+ [^ ]+ -->/)) {
+                  m = substr(line, RSTART, RLENGTH); split(m, p, "<!-- stack ")
+                  split(p[2], q, " "); check(q[1] " " q[2], num(p[1]), v[q[1] " " q[2]])
+                  line = substr(line, RSTART + RLENGTH) } }
+            # The stack column of the seed tables (README.md: board, ipp,
+            # flash, RAM, stack; port/baremetal/README.md: the tables rows).
+            f == "README.md" && /^\| [a-z0-9]+ \(/ && NF >= 7 {
+                split($0, c, "|"); split(c[2], bn, " "); check(bn[1] " seed stack", num(c[6]), seed[bn[1]]) }
+            f == "port/baremetal/README.md" && /^\| [a-z0-9]+ \| tables \|/ {
+                split($0, c, "|"); b = c[2]; gsub(/ /, "", b); check(b " seed stack", num(c[6]), seed[b]) }
+            f == "README.md" && /^    make qemu BOARD=an385 SCENE=myscene.scene/ { inex = 1; next }
+            f == "README.md" && inex && /^    wrote / { inex = 0 }
+            f == "README.md" && inex && /^    [a-z_]+ [0-9.]+$/ { check("example " $1, $2, ex[$1]) }
+            ' - "$f"
+    done >"$tmp/stackq"
+    grep -v '^ok$' "$tmp/stackq"
+    pass=$((pass + $(grep -c '^ok$' "$tmp/stackq")))
+    fail=$((fail + $(grep -c '^FAILED' "$tmp/stackq")))
+    [ "$(grep -c '^ok$' "$tmp/stackq")" -ge 10 ] && ok ||
+        bad "fewer than 10 quoted stack figures found in the docs"
+fi
+if bash tools/frame_time.sh --check 2>"$tmp/err"; then
+    ok
+else
+    bad "README.md's frame-time table does not follow the measured" \
+        "instructions per pixel (run tools/frame_time.sh --write):" \
+        "$(head -c 400 "$tmp/err")"
+fi
 
 # --- README gallery and links ------------------------------------------------
 for scene in scenes/*.scene; do

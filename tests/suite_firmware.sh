@@ -107,7 +107,8 @@ check_elf() {
     fi
     case " $* " in
     *" PRUNE=0 "*)
-        echo "$syms" | grep -qx rt_parse && res ok ||
+        # rt_parse is linked as rt_parse_cfg_o<N>_m<N>_l<N> (rt_scene.h).
+        echo "$syms" | grep -qE '^rt_parse(_cfg_[a-z0-9_]+)?$' && res ok ||
             res "FAILED: $b $name: PRUNE=0 firmware without rt_parse" ;;
     *)
         if echo "$syms" | grep -qE '^rt_(parse|lex)|^fw_scene_text$'; then

@@ -137,7 +137,9 @@ elif syms pruned | grep -qx fw_scene; then
 else
     bad "the pruned firmware has no fw_scene tables"
 fi
-syms full | grep -qx rt_parse && syms full | grep -qx fw_scene_text && ok ||
+# rt_parse is linked as rt_parse_cfg_o<N>_m<N>_l<N> (core/rt_scene.h).
+syms full | grep -qE '^rt_parse(_cfg_[a-z0-9_]+)?$' &&
+    syms full | grep -qx fw_scene_text && ok ||
     bad "the full firmware does not parse the scene text on the device"
 
 # At most half: the scene as tables instead of the text and the parser.

@@ -2,8 +2,10 @@
  * board_an385.c: QEMU mps2-an385 (Cortex-M3), also used by the m0 build
  * (Cortex-M0 code on the same machine).
  *
- * Output: semihosting (semihost.c). Counter: the FPGAIO COUNTER, a 32-bit
- * up-counter at 25 MHz of virtual time since reset. Under -icount shift=7
+ * Output: semihosting (out_semihost.c), or UART0 (out_uart.c).
+ *
+ * Counter: the FPGAIO COUNTER, a 32-bit up-counter at 25 MHz of virtual
+ * time since reset. Under -icount shift=7
  * one instruction is 128 ns = 3.2 ticks, so instructions = ticks * 5 / 16,
  * rounded: a difference of two readings is off by less than one tick, 0.31
  * instructions, so the rounded count is exact.
@@ -29,9 +31,32 @@
 
 extern uint32_t _sstack[];
 
+
+/* CMSDK APB UART0 (OUTPUT=uart): DATA, STATE (bit 0: TX full), CTRL
+ * (bit 0: TX enable; without it nothing is sent). QEMU ignores the baud
+ * divider; on the FPGA board, BAUDDIV = clock / baud. */
+#define UART_BASE 0x40004000u
+#define UART_DATA (*(volatile uint32_t *)(UART_BASE + 0x0u))
+#define UART_STATE (*(volatile const uint32_t *)(UART_BASE + 0x4u))
+#define UART_CTRL (*(volatile uint32_t *)(UART_BASE + 0x8u))
+#define UART_BAUDDIV (*(volatile uint32_t *)(UART_BASE + 0x10u))
+
+void port_uart_init(void)
+{
+    UART_BAUDDIV = 217u; /* 25 MHz / 115200 */
+    UART_CTRL = 1u;
+}
+
+void port_uart_putc(uint8_t c)
+{
+    while (UART_STATE & 1u) {
+    }
+    UART_DATA = c;
+}
+
 void port_init(void)
 {
-    port_semihost_init();
+    port_output_init();
     /* Memory below RAM reads as zero and ignores writes on this machine,
      * so an overflowing stack would go unnoticed: make the lowest 32 bytes
      * of the stack a no-access MPU region (it faults, exit 101). The

@@ -1,8 +1,8 @@
 /*
  * board_microbit.c: QEMU microbit (nRF51822, Cortex-M0, 16 KB RAM).
  *
- * Output: semihosting (semihost.c), which QEMU supports on the M0 as on
- * any M-profile core.
+ * Output: semihosting (out_semihost.c), which QEMU supports on the M0 as
+ * on any M-profile core, or the UART (out_uart.c).
  *
  * Counter: TIMER0 as a 32-bit timer at 16 MHz. Under -icount shift=7 one
  * instruction is 128 ns = 2.048 ticks, so instructions = ticks * 125 / 256,
@@ -39,9 +39,38 @@ static uint32_t timer_read(uint32_t base)
     return REG(base + CC0);
 }
 
+
+/* The nRF51 UART (OUTPUT=uart): enable, start the transmitter, then for
+ * each byte clear TXDRDY, write TXD and wait for TXDRDY. Pins and baud
+ * rate are QEMU's don't-cares; on a micro:bit the USB serial line is
+ * PSELTXD = 24 at BAUDRATE 0x01D7E000 (115200). */
+#define UART 0x40002000u
+#define UART_STARTTX 0x008u
+#define UART_TXDRDY 0x11Cu
+#define UART_ENABLE 0x500u
+#define UART_PSELTXD 0x50Cu
+#define UART_TXD 0x51Cu
+#define UART_BAUDRATE 0x524u
+
+void port_uart_init(void)
+{
+    REG(UART + UART_PSELTXD) = 24u;
+    REG(UART + UART_BAUDRATE) = 0x01D7E000u;
+    REG(UART + UART_ENABLE) = 4u;
+    REG(UART + UART_STARTTX) = 1u;
+}
+
+void port_uart_putc(uint8_t c)
+{
+    REG(UART + UART_TXDRDY) = 0;
+    REG(UART + UART_TXD) = c;
+    while (REG(UART + UART_TXDRDY) == 0) {
+    }
+}
+
 void port_init(void)
 {
-    port_semihost_init();
+    port_output_init();
     timer_start(TIMER1, 4); /* 16 MHz / 2^4 = 1 MHz */
     timer_start(TIMER0, 0); /* 16 MHz */
 }

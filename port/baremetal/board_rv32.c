@@ -1,8 +1,9 @@
 /*
  * board_rv32.c: QEMU riscv32 virt (rv32imac, machine mode).
  *
- * Output: RISC-V semihosting (semihost.c); QEMU needs
- * -semihosting-config enable=on,target=native.
+ * Output: RISC-V semihosting (out_semihost.c; QEMU needs
+ * -semihosting-config enable=on,target=native), or the 16550 UART
+ * (out_uart.c).
  *
  * Counter: minstret, the retired-instruction counter, read as 64 bits.
  * Under -icount shift=0 QEMU makes it the exact guest instruction count,
@@ -12,9 +13,27 @@
 
 extern uint32_t _sstack[];
 
+
+/* The virt machine's 16550 UART (OUTPUT=uart): THR at +0, LSR at +5
+ * (bit 5: THR empty). QEMU needs no set-up; a real 16550 wants its
+ * divisor latch and line control set here. */
+#define UART_THR (*(volatile uint8_t *)0x10000000u)
+#define UART_LSR (*(volatile const uint8_t *)0x10000005u)
+
+void port_uart_init(void)
+{
+}
+
+void port_uart_putc(uint8_t c)
+{
+    while ((UART_LSR & 0x20u) == 0) {
+    }
+    UART_THR = c;
+}
+
 void port_init(void)
 {
-    port_semihost_init();
+    port_output_init();
     /* The stack grows down towards .rodata and .text, all plain RAM: make
      * its lowest 32 bytes a locked, no-access PMP region, so an overflow
      * traps (exit 106) instead of overwriting code. Locked entries bind

@@ -5,11 +5,12 @@
  * in every place marked FILL IN. With linker/template.ld copied to
  * linker/<name>.ld and a fragment mk/boards/<name>.mk, that is the whole
  * port: the startup code (startup_cortexm.c or startup_rv32.c), the output
- * channels over semihosting (semihost.c), the stack painting (common.c)
+ * channels (out_semihost.c over semihost.c, or out_uart.c over the UART
+ * below), the stack painting (common.c)
  * and the firmware itself (main.c) are shared by every board.
  *
- * A board provides three functions (port.h): port_init(), port_cycles()
- * and port_cycles_to_insns(). The values filled in below are those of
+ * A board provides five functions (port.h): port_init(), port_cycles(),
+ * port_cycles_to_insns(), port_uart_init() and port_uart_putc(). The values filled in below are those of
  * QEMU's mps2-an385 as an example; look up yours in the board's manual,
  * or in QEMU's source for a QEMU machine (hw/arm/, hw/timer/).
  */
@@ -70,17 +71,43 @@
 extern uint32_t _sstack[];
 #endif
 
+/* FILL IN: the UART that OUTPUT=uart sends the image and text on
+ * (out_uart.c frames the image). mps2-an385: CMSDK UART0, DATA at +0,
+ * STATE at +4 (bit 0: TX full), CTRL at +8 (bit 0: TX enable), BAUDDIV at
+ * +0x10 (clock / baud). */
+#define BOARD_UART_BASE 0x40004000u
+#define BOARD_UART_DATA (*(volatile uint32_t *)(BOARD_UART_BASE + 0x0u))
+#define BOARD_UART_STATE (*(volatile const uint32_t *)(BOARD_UART_BASE + 0x4u))
+#define BOARD_UART_CTRL (*(volatile uint32_t *)(BOARD_UART_BASE + 0x8u))
+#define BOARD_UART_BAUDDIV (*(volatile uint32_t *)(BOARD_UART_BASE + 0x10u))
+
 /**********************
  *   GLOBAL FUNCTIONS
  **********************/
+
+/* FILL IN: set up the UART for sending: clock, pins, baud rate, enable. */
+void port_uart_init(void)
+{
+    BOARD_UART_BAUDDIV = 217u; /* 25 MHz / 115200 */
+    BOARD_UART_CTRL = 1u;      /* TX enable */
+}
+
+/* FILL IN: send one byte, waiting while the transmitter is full. */
+void port_uart_putc(uint8_t c)
+{
+    while (BOARD_UART_STATE & 1u) {
+    }
+    BOARD_UART_DATA = c;
+}
 
 /* Called first thing in main(), after the startup code has copied .data,
  * zeroed .bss and painted the stack. */
 void port_init(void)
 {
-    /* The image and the figures leave through semihosting (semihost.c):
-     * this opens its two channels. */
-    port_semihost_init();
+    /* The image and the figures leave through semihosting
+     * (out_semihost.c) or the UART below (out_uart.c, OUTPUT=uart): this
+     * opens the channels. */
+    port_output_init();
 
     /* FILL IN: anything the board needs before the render: clocks, a
      * watchdog to feed or disable, the counters above if they need

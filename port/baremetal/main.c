@@ -1,7 +1,8 @@
 /*
  * main.c: the fixtrace firmware. It renders the scene one scanline at a
- * time and streams a binary PPM (P6) through port_write(): there is no
- * frame buffer, only one row. The scene comes in one of two forms
+ * time and streams the image through port_write(): a binary PPM (P6) over
+ * semihosting, or a checked frame over a UART (OUTPUT=uart, out_uart.c).
+ * There is no frame buffer, only one row. The scene comes in one of two forms
  * (mk/firmware.mk):
  *
  *   FW_SCENE_TABLES 1  the scene parsed on the host (`fixtrace --emit-c`,
@@ -171,7 +172,8 @@ int main(void)
         return PORT_EXIT_RENDER;
     }
 
-    port_write_ppm_header(opt.width, opt.height);
+    port_image_begin(opt.width, opt.height, opt.format,
+                     (uint32_t)(rt_row_bytes(&opt) * opt.height));
     uint64_t t0 = port_cycles();
     st = rt_render_rows(s, &opt, 0, opt.height, row_buf, send_row, 0,
                         0);
@@ -180,6 +182,7 @@ int main(void)
         log_status("rt_render_rows", st);
         return st == RT_ERR_ARG ? PORT_EXIT_OPTIONS : PORT_EXIT_RENDER;
     }
+    port_image_end();
 
     size_t used = port_stack_used();
     port_log_value("instructions", port_cycles_to_insns(t1 - t0));

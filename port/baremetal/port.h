@@ -1,9 +1,9 @@
 /*
  * port.h: the services the bare-metal firmware needs from a board. Each
  * function here must be defined for each board (in board_<name>.c, or in
- * the shared semihost.c for the output channels); mk/firmware.mk picks the
- * files. A new board means one board file, one linker script and a few
- * lines in mk/firmware.mk.
+ * the shared out_semihost.c or out_uart.c for the output channels);
+ * mk/firmware.mk picks the files. A new board means one board file, one
+ * linker script and a few lines in mk/firmware.mk.
  */
 #ifndef PORT_H
 #define PORT_H
@@ -30,6 +30,22 @@ enum {
 /* Sets up the output channels and starts the cycle counter. Called first
  * thing in main(), after the startup code has set up .data and .bss. */
 void port_init(void);
+
+/* ---- Output channels: out_semihost.c (OUTPUT=semihost, the default) or
+ * out_uart.c (OUTPUT=uart); mk/firmware.mk links one. ------------------ */
+
+/* Opens the image and text channels. Boards call it from port_init(). */
+void port_output_init(void);
+
+/* Starts an image of w x h pixels whose rows, `payload` bytes in all, in
+ * rt_format `format`, follow through port_write(): a PPM header over
+ * semihosting, the frame header over the UART (out_uart.c). */
+void port_image_begin(unsigned w, unsigned h, unsigned format,
+                      uint32_t payload);
+
+/* Ends the image begun by port_image_begin(): nothing over semihosting,
+ * the frame's CRC-32 over the UART. */
+void port_image_end(void);
 
 /* Sends n bytes of image data; binary-clean, nothing else goes to this
  * channel. Blocks until the bytes are handed on; the buffer is the
@@ -72,11 +88,21 @@ void port_display_row(int y, const uint8_t *rgb, unsigned width);
  * (the board may never return). */
 void port_display_done(void);
 
+/* The board's UART, for OUTPUT=uart (out_uart.c): port_uart_init() sets
+ * it up for sending (port_output_init() calls it), port_uart_putc() sends
+ * one byte, waiting while the transmitter is full. Every board file
+ * defines them; --gc-sections drops them from a semihosting build. */
+void port_uart_init(void);
+void port_uart_putc(uint8_t c);
+
 /* ---- Helpers shared by the boards and the firmware --------------------- */
 
-/* Opens the semihosting channels (semihost.c, which also defines
- * port_write, port_log and port_exit). Boards call it from port_init(). */
+/* The semihosting traps (semihost.c): open the host's stdout and stderr;
+ * write n bytes to stdout (to_stderr 0) or stderr (1); exit with a status
+ * QEMU passes on. */
 void port_semihost_init(void);
+void port_semihost_write(int to_stderr, const void *buf, size_t n);
+void port_semihost_exit(int code) __attribute__((noreturn));
 
 /* Logs v in decimal on the text channel (common.c). */
 void port_log_u64(uint64_t v);
@@ -85,7 +111,7 @@ void port_log_u64(uint64_t v);
 void port_log_value(const char *name, uint64_t v);
 
 /* Writes a binary PPM header "P6\n<w> <h>\n255\n", as the host writes
- * it, through port_write (common.c). */
+ * it, through port_write (common.c; out_semihost.c's port_image_begin). */
 void port_write_ppm_header(unsigned w, unsigned h);
 
 /* Fills the unused stack below the current stack pointer with a pattern

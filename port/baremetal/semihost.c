@@ -1,12 +1,14 @@
 /*
- * semihost.c: port_write, port_log and port_exit over semihosting, shared
- * by every board (ARM: bkpt 0xAB; RISC-V: the slli/ebreak/srai sequence).
+ * semihost.c: the semihosting traps, shared by every board (ARM: bkpt 0xAB;
+ * RISC-V: the slli/ebreak/srai sequence): the host's stdout and stderr,
+ * and the exit status. out_semihost.c builds the output channels on them
+ * (OUTPUT=semihost, the default); out_uart.c uses only the exit.
  *
- * Why semihosting rather than a UART: SYS_WRITE moves a whole scanline per
- * trap and is binary-clean, and the image (":tt" opened for writing, the
- * host's stdout) and the text (":tt" opened for appending, the host's
- * stderr) arrive on separate host files, so the PPM gets only image bytes.
- * QEMU must run with -semihosting-config enable=on,target=native and
+ * Why semihosting: SYS_WRITE moves a whole scanline per trap and is
+ * binary-clean, and the image (":tt" opened for writing, the host's
+ * stdout) and the text (":tt" opened for appending, the host's stderr)
+ * arrive on separate host files, so the PPM gets only image bytes. QEMU
+ * must run with -semihosting-config enable=on,target=native and
  * -serial none (PLATFORM.md: -serial stdio makes stdout non-blocking and
  * cuts writes short). Without semihosting the first trap faults, which the
  * fault handlers turn into a non-zero exit.
@@ -91,20 +93,12 @@ void port_semihost_init(void)
     sh_err = sh_open_tt(SH_MODE_STDERR);
 }
 
-void port_write(const void *buf, size_t n)
+void port_semihost_write(int to_stderr, const void *buf, size_t n)
 {
-    sh_write_all(sh_out, buf, n);
+    sh_write_all(to_stderr ? sh_err : sh_out, buf, n);
 }
 
-void port_log(const char *s)
-{
-    size_t n = 0;
-    while (s[n] != '\0')
-        n++;
-    sh_write_all(sh_err, (const uint8_t *)s, n);
-}
-
-void port_exit(int code)
+void port_semihost_exit(int code)
 {
     uintptr_t blk[2];
     blk[0] = ADP_STOPPED_APPLICATION_EXIT;

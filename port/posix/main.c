@@ -21,6 +21,7 @@
 #include "emit_c.h"
 #include "image_out.h"
 #include "progress.h"
+#include "receive.h"
 #include "ref_render.h"
 #include "rt_parse.h"
 #include "rt_render.h"
@@ -512,6 +513,8 @@ int main(int argc, char **argv)
 {
     if (argc > 1 && strcmp(argv[1], "compare") == 0)
         return compare_main(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "receive") == 0)
+        return receive_main(argc - 1, argv + 1);
 
     cli c;
     int rc = parse_args(argc, argv, &c);
