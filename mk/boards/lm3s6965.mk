@@ -15,3 +15,10 @@ FW_QEMU = python3 tools/qemu_screen.py $(FW_BUILD)/screen.ppm -- \
     qemu-system-arm -M lm3s6965evb -display none -serial none \
     -semihosting-config enable=on,target=native
 FW_ICOUNT := 7
+# The image goes to the panel and out through semihosting; the firmware
+# then holds the picture for the screen capture, so a UART run would never
+# end: OUTPUT=uart is refused here (the UART boards are an385, m0, an505,
+# microbit and rv32).
+ifeq ($(OUTPUT),uart)
+$(error BOARD=lm3s6965 does not support OUTPUT=uart: its image goes to the OLED and through semihosting)
+endif

@@ -3,7 +3,7 @@
  * Cortex-M3 with 256 KB of flash, 64 KB of RAM and a 128x64 OLED with 16
  * grey levels (oled_ssd0323.c).
  *
- * Output: semihosting (semihost.c) for the image and the figures, as on
+ * Output: semihosting (out_semihost.c) for the image and the figures, as on
  * every board, and each row on the panel: port_display_row() maps it to
  * grey levels with rt_grey4() (core/rt_grey.c, the mapping the host's
  * tools/grey4.c uses too) and sends it as it comes, two pixels a byte;
@@ -98,7 +98,7 @@ static void clock_50mhz(void)
 
 void port_init(void)
 {
-    port_semihost_init();
+    port_output_init();
     /* An MPU guard over the lowest 32 bytes of the stack (board_an385.c):
      * an overflow faults at once (exit 101). */
     MPU_RNR = 0;
