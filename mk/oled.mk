@@ -8,8 +8,8 @@
 # tests/suite_oled.sh compares the panel with grey4's picture.
 
 GREY4 := $(HOST_BUILD)/grey4
-GREY4_OBJ := $(HOST_BUILD)/tools/grey4.o $(HOST_BUILD)/core/rt_grey.o \
-    $(HOST_BUILD)/port/posix/ppm.o
+# ppm.c reads PNG too, so the POSIX port's library links in whole.
+GREY4_OBJ := $(HOST_BUILD)/tools/grey4.o $(HOST_CORE_OBJ) $(HOST_PORT_OBJ)
 
 $(HOST_BUILD)/tools/grey4.o: tools/grey4.c $(HOST_STAMP)
 	@$(if $(Q),echo "  CC      $<")
@@ -18,7 +18,7 @@ $(HOST_BUILD)/tools/grey4.o: tools/grey4.c $(HOST_STAMP)
 
 $(GREY4): $(GREY4_OBJ)
 	@$(if $(Q),echo "  LD      $@")
-	$(Q)$(CC) $(HOST_LDFLAGS) $^ -o $@
+	$(Q)$(CC) $(HOST_LDFLAGS) $^ -o $@ $(HOST_LIBS)
 
 -include $(HOST_BUILD)/tools/grey4.d
 
