@@ -411,14 +411,18 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
                          int y1, uint8_t *row_buf, rt_row_fn fn, void *ctx,
                          rt_stats *stats)
 {
-    if (s && o && (rt_scene_features(s, o->spp) & ~rt_build_features()))
+    /* The scene's ranges and indices first: rt_scene_features reads
+     * through them. */
+    if (!s || !o || !scene_in_range(s))
+        return RT_ERR_ARG;
+    if (rt_scene_features(s, o->spp) & ~rt_build_features())
         return RT_ERR_UNSUPPORTED;
-    unsigned n = o ? grid_side(o->spp) : 0;
-    if (!s || !o || !row_buf || !fn || n == 0 || o->width < 1 ||
+    unsigned n = grid_side(o->spp);
+    if (!row_buf || !fn || n == 0 || o->width < 1 ||
         o->width > RT_MAX_WIDTH || o->height < 1 ||
         o->height > RT_MAX_HEIGHT || o->depth > RT_MAX_DEPTH ||
         o->format > RT_RGB565_BE || y0 < 0 || y1 > (int)o->height ||
-        y0 > y1 || !scene_in_range(s))
+        y0 > y1)
         return RT_ERR_ARG;
 
     rt_tracer tr;
