@@ -133,4 +133,10 @@ fx_t fx_v3_length(fx_vec3 a);
  * 0.7 ulp (an interpolated table instead of the polynomial). */
 fx_vec3 fx_v3_normalize(fx_vec3 a);
 
+/* Unit vector along a x b, from the exact 64-bit cross product, so tiny
+ * vectors do not round to zero; within normalize's bound of the true unit
+ * vector once the product is halved into range. The zero vector if a and
+ * b are parallel. */
+fx_vec3 fx_v3_cross_unit(fx_vec3 a, fx_vec3 b);
+
 #endif /* FX_VEC_H */

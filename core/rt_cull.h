@@ -2,14 +2,7 @@
 #ifndef RT_CULL_H
 #define RT_CULL_H
 
-#include "rt_internal.h"
-
-/* Per-frame camera frame (see rt_render.c). */
-typedef struct {
-    fx_vec3 w, right, up;
-    int64_t step; /* screen offset per unit of k: half / (n H), 32 frac bits */
-    unsigned n;   /* grid side */
-} rt_cam_frame;
+#include "rt_camera.h"
 
 /* Columns of one row an object may be hit in: x0 <= x <= x1. */
 typedef struct {

@@ -9,7 +9,7 @@
  * size or distance: the discriminant keeps its precision for small and far
  * objects alike. See docs/numerics.md.
  */
-#include "rt_internal.h"
+#include "rt_shape.h"
 
 /* Ulps (plus 2^-17 of the size) by which quads reach past their edges. */
 #define RT_QUAD_SLACK 2
@@ -109,37 +109,6 @@ static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
     return 1;
 }
 
-uint32_t rt_udiv64_32(uint64_t n, uint32_t d)
-{
-    /* Long division in base 2^16 after normalising d (Knuth's algorithm D
-     * as in Hacker's Delight, divlu): two 32-bit hardware divides on a
-     * Cortex-M3 instead of a 64-bit library divide. Unsigned wrap-around
-     * in the intermediate products is part of the method. */
-    const uint32_t b = 65536;
-    uint32_t u1 = (uint32_t)(n >> 32), u0 = (uint32_t)n;
-    int s = fx_clz32(d);
-    uint32_t v = d << s, vn1 = v >> 16, vn0 = v & 0xFFFF;
-    uint32_t un32 = s ? (u1 << s) | (u0 >> (32 - s)) : u1;
-    uint32_t un10 = u0 << s, un1 = un10 >> 16, un0 = un10 & 0xFFFF;
-    uint32_t q1 = un32 / vn1, rhat = un32 - q1 * vn1;
-    while (q1 >= b || q1 * vn0 > b * rhat + un1) {
-        q1--;
-        rhat += vn1;
-        if (rhat >= b)
-            break;
-    }
-    uint32_t un21 = un32 * b + un1 - q1 * v;
-    uint32_t q0 = un21 / vn1;
-    rhat = un21 - q0 * vn1;
-    while (q0 >= b || q0 * vn0 > b * rhat + un0) {
-        q0--;
-        rhat += vn1;
-        if (rhat >= b)
-            break;
-    }
-    return q1 * b + q0;
-}
-
 #if !defined(RT_NO_BOX) || !defined(RT_NO_CYLINDER) || !defined(RT_NO_CONE)
 /* Distance along d (d != 0) from coordinate o to the plane at coordinate
  * p, truncated: hit_quad's formula for an axis-aligned quad, so that
@@ -153,7 +122,7 @@ static int64_t plane_t(int64_t p, fx_t o, fx_t d)
     int neg = (num < 0) != (d < 0);
     if ((un >> 32) >= ud)
         return neg ? -INT64_MAX : INT64_MAX;
-    int64_t q = rt_udiv64_32(un, ud); /* the same truncation as C's / */
+    int64_t q = fx_udiv64_32(un, ud); /* the same truncation as C's / */
     return neg ? -q : q;
 }
 #endif
@@ -218,7 +187,7 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
     uint32_t ud = (uint32_t)(den24 < 0 ? -den24 : den24);
     if ((un >> 32) >= ud)
         return 0;
-    uint32_t tq = rt_udiv64_32(un, ud);
+    uint32_t tq = fx_udiv64_32(un, ud);
     if ((int64_t)tq <= tmin || (int64_t)tq >= tmax)
         return 0;
     const fx_t tt = (fx_t)tq; /* below tmax, so it fits */

@@ -1,5 +1,5 @@
 /* rt_texture: procedural textures and bump noise, owned by materials. */
-#include "rt_internal.h"
+#include "rt_texture.h"
 
 /* Local point: textures follow the object, not the world origin. */
 static fx_vec3 local_point(const rt_object *o, fx_vec3 p)

@@ -34,7 +34,8 @@
 #include "harness.h"
 #include "ppm.h"
 #include "ref_render.h"
-#include "rt_internal.h"
+#include "rt_shape.h"
+#include "rt_texture.h"
 #include "rt_parse.h"
 #include "rt_render.h"
 #include "rt_trace.h"
@@ -593,7 +594,7 @@ static void case_plane_parallel_few_ulps(void)
     rt_object q = quad(V(-50, -40, -30), V(100, 0, 0), V(0, -80, 60));
     fx_vec3 n = q.n;
     /* A direction in the plane: n x (1, 0, 0), then tilted by k ulps. */
-    fx_vec3 in = rt_cross_unit(n, fx_v3(FX_ONE, 0, 0));
+    fx_vec3 in = fx_v3_cross_unit(n, fx_v3(FX_ONE, 0, 0));
     for (int k = -6; k <= 6; k++) {
         fx_vec3 d = fx_v3(in.x, in.y + k, in.z);
         rt_ray r = ray_raw(V(0, 0.001, 0.0), d);
