@@ -10,6 +10,12 @@ typedef struct {
     int16_t x0, x1;
 } rt_span;
 
+/* The objects camera rays of one pixel row may hit, in object order. */
+typedef struct {
+    rt_span span[RT_MAX_OBJECTS];
+    unsigned count;
+} rt_row_spans;
+
 /* Fills spans[] (in object order) with the objects that camera rays of
  * pixel row y may hit, with their column ranges; returns their count. The
  * ranges are conservative: an object left out, or a column outside its

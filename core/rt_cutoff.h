@@ -27,9 +27,9 @@ static inline fx_t rt_child_weight(fx_t w, fx_t k)
 
 /* 1 if a ray of weight w at this depth must be traced. If not, its colour
  * is taken as 0 and its bound w B is taken off the sample's budget. */
-static inline int rt_worth_tracing(rt_work *wk, fx_t w, unsigned depth)
+static inline int rt_worth_tracing(const rt_tracer *tr, rt_work *wk, fx_t w,
+                                   unsigned depth)
 {
-    const rt_tracer *tr = wk->tr;
     uint64_t cost = (uint64_t)(uint32_t)w * tr->bound[tr->max_depth - depth];
     if (cost >= wk->budget)
         return 1;

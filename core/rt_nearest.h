@@ -30,11 +30,10 @@ static inline void rt_try_nearest(rt_work *wk, const rt_object *objs,
 /* Nearest hit among all objects but `skip`, of a ray leaving object
  * `from` (RT_NO_OBJECT: unknown). Returns 1 and sets *t, *obj and *part
  * on a hit. */
-static inline int rt_nearest(rt_work *wk, const rt_ray *r, unsigned skip,
-                             unsigned from, fx_t *t, uint16_t *obj,
-                             uint8_t *part)
+static inline int rt_nearest(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
+                             unsigned skip, unsigned from, fx_t *t,
+                             uint16_t *obj, uint8_t *part)
 {
-    const rt_tracer *tr = wk->tr;
     const rt_scene *s = tr->scene;
     const uint32_t *cand;
     fx_t best = FX_MAX;
@@ -62,14 +61,16 @@ static inline int rt_nearest(rt_work *wk, const rt_ray *r, unsigned skip,
 }
 
 /* Nearest hit of camera ray r in pixel column x among the row's spans. */
-static inline int rt_nearest_camera(rt_work *wk, const rt_ray *r,
-                                    const rt_span *spans, unsigned n_spans,
+static inline int rt_nearest_camera(const rt_tracer *tr, rt_work *wk,
+                                    const rt_ray *r, const rt_row_spans *rs,
                                     unsigned x, fx_t *t, uint16_t *obj,
                                     uint8_t *part)
 {
-    const rt_scene *s = wk->tr->scene;
+    const rt_scene *s = tr->scene;
     fx_t best = FX_MAX;
     int found = 0;
+    const rt_span *spans = rs->span;
+    const unsigned n_spans = rs->count;
     for (unsigned k = 0; k < n_spans; k++) {
         fx_t ti;
         uint8_t pi;

@@ -102,13 +102,13 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
     rt_tracer tr;
     rt_tracer_init(&tr, s, o);
     rt_work wk;
-    rt_work_init(&wk, &tr, stats);
+    rt_work_init(&wk, stats);
     rt_cam_frame cf;
     rt_cam_setup(&cf, s, o->height, n);
     if (RT_HAS_SUPERSAMPLING && o->adaptive && n > 1)
-        return rt_aa_adaptive(&wk, &cf, o, y0, y1, row_buf, fn, ctx);
+        return rt_aa_adaptive(&tr, &wk, &cf, o, y0, y1, row_buf, fn, ctx);
     for (int y = y0; y < y1; y++) {
-        rt_aa_row(&wk, &cf, o, (unsigned)y, row_buf);
+        rt_aa_row(&tr, &wk, &cf, o, (unsigned)y, row_buf);
         if (fn(ctx, y, row_buf, rt_row_bytes(o)) != 0)
             return RT_ERR_ABORTED;
     }

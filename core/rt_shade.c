@@ -16,10 +16,9 @@
 #include "rt_texture.h"
 
 /* Colour of the hit (object oi, part, distance t) seen along r. */
-static rt_rgb shade(rt_work *wk, const rt_ray *r, unsigned depth, fx_t w,
-                    uint16_t oi, uint8_t part, fx_t t)
+static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
+                    unsigned depth, fx_t w, uint16_t oi, uint8_t part, fx_t t)
 {
-    const rt_tracer *tr = wk->tr;
     const rt_scene *s = tr->scene;
     const rt_object *o = &s->obj[oi];
     const rt_material *m = &s->mat[o->material];
@@ -59,11 +58,11 @@ static rt_rgb shade(rt_work *wk, const rt_ray *r, unsigned depth, fx_t w,
         if (ndl <= 0)
             continue;
         if (RT_HAS_SHADOWS && (tr->feat & RT_FEAT_SHADOWS) &&
-            rt_in_shadow(wk, li, lv, ld, &p_out, &have_out, ng, off,
+            rt_in_shadow(tr, wk, li, lv, ld, &p_out, &have_out, ng, off,
                          skip_out))
             continue;
-        rt_rgb lc = li == 0 ? tr->lit[o->material][tex]
-                            : rt_rgb_mul(base, l->color);
+        rt_rgb lc =
+            li == 0 ? tr->lit[o->material][tex] : rt_rgb_mul(base, l->color);
         rt_rgb_madd(&c, lc, fx_mul(kdl, ndl)); /* Lambert */
         fx_t ks;
         if (RT_HAS_SPECULAR && m->specular > 0 &&
@@ -75,18 +74,18 @@ static rt_rgb shade(rt_work *wk, const rt_ray *r, unsigned depth, fx_t w,
 
     if (RT_HAS_REFLECTION) {
         fx_t wr = rt_child_weight(w, m->reflect);
-        if (m->reflect > 0 && rt_worth_tracing(wk, wr, depth + 1)) {
+        if (m->reflect > 0 && rt_worth_tracing(tr, wk, wr, depth + 1)) {
             rt_ray rr;
             rt_out_point(&p_out, &have_out, ng, off);
             rt_ray_set(&rr, p_out, rt_reflect_dir(r->d, n));
             RT_COUNT(wk, reflection);
-            rt_rgb_madd(&c, rt_trace(wk, &rr, depth + 1, wr, skip_out, oi),
+            rt_rgb_madd(&c, rt_trace(tr, wk, &rr, depth + 1, wr, skip_out, oi),
                         m->reflect);
         }
     }
     if (RT_HAS_REFRACTION) {
         fx_t wt = rt_child_weight(w, m->transparency);
-        if (m->transparency > 0 && rt_worth_tracing(wk, wt, depth + 1)) {
+        if (m->transparency > 0 && rt_worth_tracing(tr, wk, wt, depth + 1)) {
             fx_t eta = outside ? m->ior_inv : m->ior;
             fx_vec3 td;
             rt_ray tr2;
@@ -95,9 +94,9 @@ static rt_rgb shade(rt_work *wk, const rt_ray *r, unsigned depth, fx_t w,
                 rt_out_point(&p_out, &have_out, ng, off);
                 rt_ray_set(&tr2, p_out, rt_reflect_dir(r->d, n));
                 RT_COUNT(wk, reflection);
-                rt_rgb_madd(&c,
-                            rt_trace(wk, &tr2, depth + 1, wt, skip_out, oi),
-                            m->transparency);
+                rt_rgb_madd(
+                    &c, rt_trace(tr, wk, &tr2, depth + 1, wt, skip_out, oi),
+                    m->transparency);
             } else {
                 unsigned skip_in =
                     (o->convex && (!outside || o->kind == RT_QUAD))
@@ -106,7 +105,7 @@ static rt_rgb shade(rt_work *wk, const rt_ray *r, unsigned depth, fx_t w,
                 rt_ray_set(&tr2, fx_v3_madd_unit(p, ng, -off), td);
                 RT_COUNT(wk, refraction);
                 rt_rgb_madd(&c,
-                            rt_trace(wk, &tr2, depth + 1, wt, skip_in, oi),
+                            rt_trace(tr, wk, &tr2, depth + 1, wt, skip_in, oi),
                             m->transparency);
             }
         }
@@ -114,26 +113,26 @@ static rt_rgb shade(rt_work *wk, const rt_ray *r, unsigned depth, fx_t w,
     return c;
 }
 
-rt_rgb rt_trace(rt_work *wk, const rt_ray *r, unsigned depth, fx_t w,
-                unsigned skip, unsigned from)
+rt_rgb rt_trace(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
+                unsigned depth, fx_t w, unsigned skip, unsigned from)
 {
     fx_t t;
     uint16_t oi = 0;
     uint8_t part = 0;
-    if (!rt_nearest(wk, r, skip, from, &t, &oi, &part))
-        return wk->tr->scene->background;
-    return shade(wk, r, depth, w, oi, part, t);
+    if (!rt_nearest(tr, wk, r, skip, from, &t, &oi, &part))
+        return tr->scene->background;
+    return shade(tr, wk, r, depth, w, oi, part, t);
 }
 
-rt_rgb rt_trace_camera(rt_work *wk, const rt_ray *r, const rt_span *spans,
-                       unsigned n_spans, unsigned x)
+rt_rgb rt_trace_camera(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
+                       const rt_row_spans *rs, unsigned x)
 {
     fx_t t;
     uint16_t oi = 0;
     uint8_t part = 0;
     if (RT_CUTOFF)
-        wk->budget = wk->tr->cut_budget; /* a new sample */
-    if (!rt_nearest_camera(wk, r, spans, n_spans, x, &t, &oi, &part))
-        return wk->tr->scene->background;
-    return shade(wk, r, 0, FX_ONE, oi, part, t);
+        wk->budget = tr->cut_budget; /* a new sample */
+    if (!rt_nearest_camera(tr, wk, r, rs, x, &t, &oi, &part))
+        return tr->scene->background;
+    return shade(tr, wk, r, 0, FX_ONE, oi, part, t);
 }

@@ -43,11 +43,10 @@ static inline int rt_blocks(rt_work *wk, const rt_object *objs,
 
 /* Any blocker with RT_EPS < t < tmax among the candidates (a bit set of
  * object indices, or NULL for all objects) but skip. */
-static inline int rt_occluded(rt_work *wk, const rt_ray *r, fx_t tmax,
-                              unsigned skip, unsigned light,
-                              const uint32_t *cand)
+static inline int rt_occluded(const rt_tracer *tr, rt_work *wk,
+                              const rt_ray *r, fx_t tmax, unsigned skip,
+                              unsigned light, const uint32_t *cand)
 {
-    const rt_tracer *tr = wk->tr;
     const rt_scene *s = tr->scene;
     unsigned first = wk->blocker[light];
     if (first < s->n_objects && first != skip &&
@@ -65,7 +64,8 @@ static inline int rt_occluded(rt_work *wk, const rt_ray *r, fx_t tmax,
         return 0;
     }
     for (unsigned i = 0; i < s->n_objects; i++)
-        if (i != skip && i != first && rt_blocks(wk, s->obj, r, tmax, i, light))
+        if (i != skip && i != first &&
+            rt_blocks(wk, s->obj, r, tmax, i, light))
             return 1;
     return 0;
 }
@@ -73,14 +73,15 @@ static inline int rt_occluded(rt_work *wk, const rt_ray *r, fx_t tmax,
 /* 1 if light li is hidden from the hit point: a shadow ray from *p_out
  * (made on first use, rt_out_point) along unit ld, to the light at lv
  * from the hit, ignoring object skip. */
-static inline int rt_in_shadow(rt_work *wk, unsigned li, fx_vec3 lv,
-                               fx_vec3 ld, fx_vec3 *p_out, int *have_out,
-                               fx_vec3 ng, fx_t off, unsigned skip)
+static inline int rt_in_shadow(const rt_tracer *tr, rt_work *wk, unsigned li,
+                               fx_vec3 lv, fx_vec3 ld, fx_vec3 *p_out,
+                               int *have_out, fx_vec3 ng, fx_t off,
+                               unsigned skip)
 {
     const uint32_t *cand = 0; /* every object */
     int any = 1;
-    if (rt_dir_to_light(&wk->tr->grids, li, ld, &cand))
-        any = rt_listed_besides(cand, wk->tr->grids.words, skip);
+    if (rt_dir_to_light(&tr->grids, li, ld, &cand))
+        any = rt_listed_besides(cand, tr->grids.words, skip);
     RT_COUNT(wk, shadow);
     if (!any)
         return 0;
@@ -90,8 +91,8 @@ static inline int rt_in_shadow(rt_work *wk, unsigned li, fx_vec3 lv,
     /* |lv| = lv . norm(lv): a bounded dot product instead of a second
      * square root; its error (~1e-5 |lv|) only moves the far end of the
      * shadow ray, by far less than RT_EPS. */
-    return rt_occluded(wk, &sr, fx_sub(fx_v3_dotn(lv, ld), RT_EPS), skip, li,
-                       cand);
+    return rt_occluded(tr, wk, &sr, fx_sub(fx_v3_dotn(lv, ld), RT_EPS), skip,
+                       li, cand);
 }
 
 #endif /* RT_SHADOW_H */

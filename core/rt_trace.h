@@ -33,7 +33,6 @@ typedef struct {
 } rt_tracer;
 
 typedef struct {
-    const rt_tracer *tr;
     rt_stats *stats; /* may be NULL */
     /* The current sample's allowance for untraced colour (Q32.32): a ray
      * of weight w and bound B is skipped when w B is below it, and w B is
@@ -47,8 +46,8 @@ typedef struct {
  * bounds, the sealed glass and the direction grids. */
 void rt_tracer_init(rt_tracer *tr, const rt_scene *s, const rt_options *o);
 
-/* Empty work for tracing with tr: no blockers known, a budget of 0. */
-void rt_work_init(rt_work *wk, const rt_tracer *tr, rt_stats *stats);
+/* Empty work: no blockers known, a budget of 0. */
+void rt_work_init(rt_work *wk, rt_stats *stats);
 
 /* Adds one to a counter of wk's rt_stats, if counting (RT_STATS). */
 #define RT_COUNT(wk, field)                                                   \
@@ -63,13 +62,13 @@ void rt_work_init(rt_work *wk, const rt_tracer *tr, rt_stats *stats);
  * (RT_NO_OBJECT for none); from is the object the ray starts on
  * (RT_NO_OBJECT for none), whose direction grid may narrow the search.
  * Recursion depth is at most tr->max_depth <= RT_MAX_DEPTH. */
-rt_rgb rt_trace(rt_work *wk, const rt_ray *r, unsigned depth, fx_t w,
-                unsigned skip, unsigned from);
+rt_rgb rt_trace(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
+                unsigned depth, fx_t w, unsigned skip, unsigned from);
 
 /* Colour seen along camera ray r of pixel column x, testing only the
  * objects whose row span covers x (rt_cull_row); starts a new sample's
  * cut-off budget. Same result as rt_trace (depth 0, nothing skipped). */
-rt_rgb rt_trace_camera(rt_work *wk, const rt_ray *r, const rt_span *spans,
-                       unsigned n_spans, unsigned x);
+rt_rgb rt_trace_camera(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
+                       const rt_row_spans *rs, unsigned x);
 
 #endif /* RT_TRACE_H */

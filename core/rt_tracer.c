@@ -39,9 +39,8 @@ void rt_tracer_init(rt_tracer *tr, const rt_scene *s, const rt_options *o)
     rt_dir_grids_prepare(&tr->grids, s);
 }
 
-void rt_work_init(rt_work *wk, const rt_tracer *tr, rt_stats *stats)
+void rt_work_init(rt_work *wk, rt_stats *stats)
 {
-    wk->tr = tr;
     wk->stats = stats;
     wk->budget = 0;
     for (unsigned i = 0; i < RT_MAX_LIGHTS; i++)

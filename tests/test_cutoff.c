@@ -163,7 +163,7 @@ static long bound_trial(long *rays, long *over, long *mats)
     opt.depth = (uint8_t)depth;
     opt.trace_all = 1; /* a budget of 0: every ray is traced */
     rt_tracer_init(&tr, &s, &opt);
-    rt_work_init(&wk, &tr, NULL);
+    rt_work_init(&wk, NULL);
     check_spec_min(&tr, mats);
     for (int k = 0; k < 300; k++) {
         unsigned d = (unsigned)pick((int)depth + 1);
@@ -173,7 +173,8 @@ static long bound_trial(long *rays, long *over, long *mats)
                             unit(uni(-3, 6)));
         rt_ray r;
         rt_ray_set(&r, o, fx_v3_normalize(fx_v3_sub(aim, o)));
-        rt_rgb c = rt_trace(&wk, &r, d, FX_ONE, RT_NO_OBJECT, RT_NO_OBJECT);
+        rt_rgb c =
+            rt_trace(&tr, &wk, &r, d, FX_ONE, RT_NO_OBJECT, RT_NO_OBJECT);
         fx_t top = c.r > c.g ? (c.r > c.b ? c.r : c.b)
                              : (c.g > c.b ? c.g : c.b);
         long ratio = (long)((int64_t)top * 1000 / tr.bound[depth - d]);
