@@ -62,10 +62,11 @@ static rt_rgb sample(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
     return rt_trace_camera(tr, wk, &r, &rs->hit, x);
 }
 
-/* One pixel: the mean of its n x n samples (cf->n), rounded to 8 bits. */
-static void pixel(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
-                  const row_spans *rs, const rt_options *o, unsigned x,
-                  uint8_t rgb8[3])
+/* One pixel: the mean of its n x n samples (cf->n), rounded to 8 bits.
+ * Not inlined: the row's frame (under rt_cull_row) stays small. */
+RT_NOINLINE static void pixel(const rt_tracer *tr, rt_work *wk,
+                              const rt_cam_frame *cf, const row_spans *rs,
+                              const rt_options *o, unsigned x, uint8_t rgb8[3])
 {
     /* Without supersampling n is 1 at compile time: the loops fold away. */
     const unsigned n = RT_HAS_SUPERSAMPLING ? cf->n : 1, spp = n * n;

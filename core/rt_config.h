@@ -218,6 +218,18 @@
  * (RT_DIR_GRID 0) so that suite_cull compares it too. */
 #define RT_SEALED (RT_DIR_GRIDS && RT_HAS_REFRACTION)
 
+/* ---- Compiler hints ----------------------------------------------------- */
+
+/* Inlining decisions that measurably matter for cost or stack (GCC and
+ * Clang; other compilers decide for themselves). */
+#if defined(__GNUC__)
+#define RT_ALWAYS_INLINE __attribute__((always_inline))
+#define RT_NOINLINE __attribute__((noinline))
+#else
+#define RT_ALWAYS_INLINE
+#define RT_NOINLINE
+#endif
+
 /* ---- Checks -------------------------------------------------------------- */
 
 /* The scene's field types bound the capacities. */

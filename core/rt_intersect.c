@@ -41,10 +41,7 @@
 /* small: the object's centre and radius are rt_small3 (rt_object.small).
  * Inlined into each shape's test: the call and its nine arguments cost
  * more than the common rejection itself. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
+RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
                           const rt_ray *ray, fx_t tmin, fx_t tmax,
                           int64_t *tca, uint64_t *disc, int64_t h[3])
 {

@@ -15,6 +15,9 @@
 #include "rt_specular.h"
 #include "rt_texture.h"
 
+static rt_rgb trace(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
+                    unsigned depth, fx_t w, unsigned skip, unsigned from);
+
 /* Colour of the hit (object oi, part, distance t) seen along r. */
 static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
                     unsigned depth, fx_t w, uint16_t oi, uint8_t part, fx_t t)
@@ -79,7 +82,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
             rt_out_point(&p_out, &have_out, ng, off);
             rt_ray_set(&rr, p_out, rt_reflect_dir(r->d, n));
             RT_COUNT(wk, reflection);
-            rt_rgb_madd(&c, rt_trace(tr, wk, &rr, depth + 1, wr, skip_out, oi),
+            rt_rgb_madd(&c, trace(tr, wk, &rr, depth + 1, wr, skip_out, oi),
                         m->reflect);
         }
     }
@@ -94,9 +97,9 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
                 rt_out_point(&p_out, &have_out, ng, off);
                 rt_ray_set(&tr2, p_out, rt_reflect_dir(r->d, n));
                 RT_COUNT(wk, reflection);
-                rt_rgb_madd(
-                    &c, rt_trace(tr, wk, &tr2, depth + 1, wt, skip_out, oi),
-                    m->transparency);
+                rt_rgb_madd(&c,
+                            trace(tr, wk, &tr2, depth + 1, wt, skip_out, oi),
+                            m->transparency);
             } else {
                 unsigned skip_in =
                     (o->convex && (!outside || o->kind == RT_QUAD))
@@ -105,7 +108,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
                 rt_ray_set(&tr2, fx_v3_madd_unit(p, ng, -off), td);
                 RT_COUNT(wk, refraction);
                 rt_rgb_madd(&c,
-                            rt_trace(tr, wk, &tr2, depth + 1, wt, skip_in, oi),
+                            trace(tr, wk, &tr2, depth + 1, wt, skip_in, oi),
                             m->transparency);
             }
         }
@@ -113,8 +116,9 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     return c;
 }
 
-rt_rgb rt_trace(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
-                unsigned depth, fx_t w, unsigned skip, unsigned from)
+/* rt_trace, which the compiler may fold into shade()'s recursion. */
+static rt_rgb trace(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
+                    unsigned depth, fx_t w, unsigned skip, unsigned from)
 {
     fx_t t;
     uint16_t oi = 0;
@@ -122,6 +126,12 @@ rt_rgb rt_trace(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     if (!rt_nearest(tr, wk, r, skip, from, &t, &oi, &part))
         return tr->scene->background;
     return shade(tr, wk, r, depth, w, oi, part, t);
+}
+
+rt_rgb rt_trace(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
+                unsigned depth, fx_t w, unsigned skip, unsigned from)
+{
+    return trace(tr, wk, r, depth, w, skip, from);
 }
 
 rt_rgb rt_trace_camera(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
