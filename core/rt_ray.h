@@ -21,7 +21,7 @@ typedef struct {
     fx_vec3 o;     /* origin */
     fx_vec3 d;     /* unit direction */
     int32_t e;     /* rt_unit_err(d): |d|^2 - 1 in Q32.32 */
-    uint8_t small; /* rt_small3(o): the 32-bit intersection paths apply */
+    uint8_t small; /* fx_v3_small(o): the 32-bit intersection paths apply */
 } rt_ray;
 
 /* |d|^2 - 1 of a unit direction, in Q32.32 (rounding leaves |d| a little
@@ -35,23 +35,14 @@ static inline int32_t rt_unit_err(fx_vec3 d)
                      (int64_t)d.z * d.z - ((int64_t)1 << 32));
 }
 
-/* 1 if every component of v is below 2^29 (8192 units) in magnitude:
- * differences of two such points fit 32 bits. */
-static inline int rt_small3(fx_vec3 v)
-{
-    const uint32_t lim = (uint32_t)1 << 30;
-    return (uint32_t)v.x + (lim >> 1) < lim &&
-           (uint32_t)v.y + (lim >> 1) < lim && (uint32_t)v.z + (lim >> 1) < lim;
-}
-
 /* Sets a ray's origin and unit direction, and the two values its tests
- * derive from them (rt_unit_err, rt_small3). */
+ * derive from them (rt_unit_err, fx_v3_small). */
 static inline void rt_ray_set(rt_ray *r, fx_vec3 o, fx_vec3 d)
 {
     r->o = o;
     r->d = d;
     r->e = rt_unit_err(d);
-    r->small = (uint8_t)rt_small3(o);
+    r->small = (uint8_t)fx_v3_small(o);
 }
 
 /* How far along the normal a ray leaving object o starts off its surface:

@@ -1,6 +1,6 @@
 /* rt_scene: scene defaults and the per-object constants the tracer uses. */
 #include "rt_libc.h"
-#include "rt_ray.h"
+#include "rt_scene.h"
 
 /* Largest cone slope r / h: flatter cones lose the unit-frame precision
  * (k^2 must stay well inside Q16.16). */
@@ -66,7 +66,7 @@ rt_status rt_object_prepare(rt_object *o)
 {
     o->flat = 0;
     rt_status st = prepare_shape(o);
-    o->small = st == RT_OK && o->br < ((fx_t)1 << 29) && rt_small3(o->bc);
+    o->small = st == RT_OK && o->br < ((fx_t)1 << 29) && fx_v3_small(o->bc);
     return st;
 }
 

@@ -35,7 +35,7 @@ static rt_ray ray(double ox, double oy, double oz, double dx, double dy,
     r.o = fx_v3(D2F(ox), D2F(oy), D2F(oz));
     r.d = fx_v3(D2F(dx / l), D2F(dy / l), D2F(dz / l));
     r.e = rt_unit_err(r.d);
-    r.small = (uint8_t)rt_small3(r.o);
+    r.small = (uint8_t)fx_v3_small(r.o);
     return r;
 }
 
