@@ -51,9 +51,11 @@ static void row_setup(row_spans *rs, const rt_tracer *tr,
 }
 
 /* The sample at screen offset k (rt_cam_col_k) along the sample row whose
- * centre direction is base, in pixel column x. */
-static rt_rgb sample(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
-                     const row_spans *rs, fx_vec3 base, int32_t k, unsigned x)
+ * centre direction is base, in pixel column x. Not inlined: the row's
+ * frame (under rt_cull_row) stays small. */
+RT_NOINLINE static rt_rgb sample(const rt_tracer *tr, rt_work *wk,
+                                 const rt_cam_frame *cf, const row_spans *rs,
+                                 fx_vec3 base, int32_t k, unsigned x)
 {
     rt_ray r;
     fx_vec3 d = rt_cam_dir(cf, base, rt_cam_offset(cf, k));
@@ -62,11 +64,10 @@ static rt_rgb sample(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
     return rt_trace_camera(tr, wk, &r, &rs->hit, x);
 }
 
-/* One pixel: the mean of its n x n samples (cf->n), rounded to 8 bits.
- * Not inlined: the row's frame (under rt_cull_row) stays small. */
-RT_NOINLINE static void pixel(const rt_tracer *tr, rt_work *wk,
-                              const rt_cam_frame *cf, const row_spans *rs,
-                              const rt_options *o, unsigned x, uint8_t rgb8[3])
+/* One pixel: the mean of its n x n samples (cf->n), rounded to 8 bits. */
+static void pixel(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
+                  const row_spans *rs, const rt_options *o, unsigned x,
+                  uint8_t rgb8[3])
 {
     /* Without supersampling n is 1 at compile time: the loops fold away. */
     const unsigned n = RT_HAS_SUPERSAMPLING ? cf->n : 1, spp = n * n;
