@@ -30,8 +30,7 @@ static void row_setup(row_spans *rs, const rt_tracer *tr,
         rs->base[j] = fx_v3_madd(cf->w, cf->up, sy);
     }
     if (RT_CULL) {
-        rs->hit.count =
-            rt_cull_row(s, cf, o->width, o->height, y, rs->hit.span);
+        rt_cull_row(s, cf, o->width, o->height, y, &rs->hit);
     } else {
         for (unsigned i = 0; i < s->n_objects; i++) {
             rs->hit.span[i].obj = (uint16_t)i;
@@ -108,7 +107,7 @@ static void pixel(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
     }
     for (int k = 0; k < 3; k++)
         rgb8[k] =
-            fx_to_u8((fx_t)(spp == 1 ? sum[k] : (sum[k] + spp / 2) / spp));
+            fx_to_u8((fx_t)(spp <= 1 ? sum[k] : (sum[k] + spp / 2) / spp));
 }
 
 void rt_aa_row(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
@@ -143,7 +142,7 @@ rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
     uint8_t *slot[3];
     int slot_y[3] = { -1, -1, -1 };
     for (int k = 0; k < 3; k++)
-        slot[k] = row_buf + rt_row_bytes(o) + (size_t)k * 3u * w;
+        slot[k] = row_buf + rt_pixel_row_bytes(o) + (size_t)k * 3u * w;
     for (int y = y0; y < y1; y++) {
         /* Centre samples of rows y-1, y, y+1 (clamped to the image). */
         const uint8_t *near[3];
@@ -181,7 +180,7 @@ rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
                 pixel(tr, wk, cfn, &rs, o, x, rgb8);
             rt_put_pixel(row_buf, o, x, (unsigned)y, rgb8);
         }
-        if (fn(ctx, y, row_buf, rt_row_bytes(o)) != 0)
+        if (fn(ctx, y, row_buf, rt_pixel_row_bytes(o)) != 0)
             return RT_ERR_ABORTED;
     }
     return RT_OK;

@@ -167,10 +167,10 @@ static int64_t column(const rt_cam_frame *cf, int64_t s, unsigned width)
     return floor_div(k + (int64_t)width * cf->n, 2 * (int64_t)cf->n);
 }
 
-unsigned rt_cull_row(const rt_scene *s, const rt_cam_frame *cf,
-                     unsigned width, unsigned height, unsigned y,
-                     rt_span *spans)
+void rt_cull_row(const rt_scene *s, const rt_cam_frame *cf, unsigned width,
+                 unsigned height, unsigned y, rt_row_spans *rs)
 {
+    rt_span *spans = rs->span;
     unsigned count = 0;
     const unsigned n = cf->n;
     row_plane rp[RT_MAX_SPP_SIDE];
@@ -204,5 +204,5 @@ unsigned rt_cull_row(const rt_scene *s, const rt_cam_frame *cf,
         spans[count].x1 = (int16_t)x1;
         count++;
     }
-    return count;
+    rs->count = count;
 }

@@ -16,12 +16,11 @@ typedef struct {
     unsigned count;
 } rt_row_spans;
 
-/* Fills spans[] (in object order) with the objects that camera rays of
- * pixel row y may hit, with their column ranges; returns their count. The
- * ranges are conservative: an object left out, or a column outside its
- * range, cannot be hit by any sample of that pixel. */
-unsigned rt_cull_row(const rt_scene *s, const rt_cam_frame *cf,
-                     unsigned width, unsigned height, unsigned y,
-                     rt_span *spans);
+/* Fills *rs (in object order) with the objects that camera rays of pixel
+ * row y may hit, with their column ranges. The ranges are conservative:
+ * an object left out, or a column outside its range, cannot be hit by any
+ * sample of that pixel. */
+void rt_cull_row(const rt_scene *s, const rt_cam_frame *cf, unsigned width,
+                 unsigned height, unsigned y, rt_row_spans *rs);
 
 #endif /* RT_CULL_H */

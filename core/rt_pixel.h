@@ -8,6 +8,12 @@
 
 #include "rt_render.h"
 
+/* Bytes of one output row: width * 3 (RGB888) or width * 2 (RGB565). */
+static inline size_t rt_pixel_row_bytes(const rt_options *o)
+{
+    return (size_t)o->width * (o->format == RT_RGB888 ? 3u : 2u);
+}
+
 /* Adds an ordered-dither threshold below one output step (8 for 5 bits,
  * 4 for 6 bits), so rounding down to 5/6 bits averages out. */
 static inline unsigned rt_dither(unsigned v, unsigned step, unsigned t)

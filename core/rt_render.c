@@ -5,6 +5,7 @@
  * bytes.
  */
 #include "rt_antialias.h"
+#include "rt_pixel.h"
 
 void rt_options_from_scene(rt_options *o, const rt_scene *s)
 {
@@ -20,7 +21,7 @@ void rt_options_from_scene(rt_options *o, const rt_scene *s)
 
 size_t rt_row_bytes(const rt_options *o)
 {
-    return (size_t)o->width * (o->format == RT_RGB888 ? 3u : 2u);
+    return rt_pixel_row_bytes(o);
 }
 
 size_t rt_buffer_bytes(const rt_options *o)
