@@ -110,3 +110,34 @@ fx_t fx_recip(fx_t a)
     return sat_signed(q, a < 0);
 #endif
 }
+
+uint32_t fx_udiv64_32(uint64_t n, uint32_t d)
+{
+    /* Long division in base 2^16 after normalising d (Knuth's algorithm D
+     * as in Hacker's Delight, divlu): two 32-bit hardware divides on a
+     * Cortex-M3 instead of a 64-bit library divide. Unsigned wrap-around
+     * in the intermediate products is part of the method. */
+    const uint32_t b = 65536;
+    uint32_t u1 = (uint32_t)(n >> 32), u0 = (uint32_t)n;
+    int s = fx_clz32(d);
+    uint32_t v = d << s, vn1 = v >> 16, vn0 = v & 0xFFFF;
+    uint32_t un32 = s ? (u1 << s) | (u0 >> (32 - s)) : u1;
+    uint32_t un10 = u0 << s, un1 = un10 >> 16, un0 = un10 & 0xFFFF;
+    uint32_t q1 = un32 / vn1, rhat = un32 - q1 * vn1;
+    while (q1 >= b || q1 * vn0 > b * rhat + un1) {
+        q1--;
+        rhat += vn1;
+        if (rhat >= b)
+            break;
+    }
+    uint32_t un21 = un32 * b + un1 - q1 * v;
+    uint32_t q0 = un21 / vn1;
+    rhat = un21 - q0 * vn1;
+    while (q0 >= b || q0 * vn0 > b * rhat + un0) {
+        q0--;
+        rhat += vn1;
+        if (rhat >= b)
+            break;
+    }
+    return q1 * b + q0;
+}

@@ -219,6 +219,31 @@ uint32_t fx_sqrt_q32(uint64_t a);
  * accuracy setting; cannot overflow (the result is below 2^32). */
 uint32_t fx_isqrt64(uint64_t a);
 
+/* floor(n / d) for d > 0 and n < d * 2^32 (the quotient fits 32 bits),
+ * exact, with two 32-bit divides (a 64-bit divide is a library call on
+ * Cortex-M). */
+uint32_t fx_udiv64_32(uint64_t n, uint32_t d);
+
+/* tan(deg / 2) for an angle of 0 < deg < 180 degrees: relative error about
+ * 2^-28 before the final rounding to nearest; saturates to FX_MAX near
+ * 180; deg <= 0 gives 0. */
+fx_t fx_tan_half_deg(fx_t deg);
+
+/* x^n for 0 <= x <= 1 by repeated squaring; each product rounds as fx_mul,
+ * so the result is within about n ulps and never above 1. */
+static inline fx_t fx_powi(fx_t x, unsigned n)
+{
+    fx_t r = FX_ONE;
+    while (n) {
+        if (n & 1)
+            r = fx_mul(r, x);
+        n >>= 1;
+        if (n)
+            x = fx_mul(x, x);
+    }
+    return r;
+}
+
 /* floor(x), as an integer (exact). */
 static inline int32_t fx_floor_int(fx_t x)
 {

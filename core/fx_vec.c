@@ -306,3 +306,23 @@ fx_vec3 fx_v3_normalize(fx_vec3 a)
                  unit_exact(a.z, bz, r46, len2));
 #endif
 }
+
+/* Unit vector along an exact 64-bit vector (for normals from cross
+ * products of tiny edges, which would round to zero in Q16.16). */
+static fx_vec3 norm64(int64_t x, int64_t y, int64_t z)
+{
+    while (x > FX_MAX / 2 || x < FX_MIN / 2 || y > FX_MAX / 2 ||
+           y < FX_MIN / 2 || z > FX_MAX / 2 || z < FX_MIN / 2) {
+        x /= 2;
+        y /= 2;
+        z /= 2;
+    }
+    return fx_v3_normalize(fx_v3((fx_t)x, (fx_t)y, (fx_t)z));
+}
+
+fx_vec3 fx_v3_cross_unit(fx_vec3 a, fx_vec3 b)
+{
+    return norm64((int64_t)a.y * b.z - (int64_t)a.z * b.y,
+                  (int64_t)a.z * b.x - (int64_t)a.x * b.z,
+                  (int64_t)a.x * b.y - (int64_t)a.y * b.x);
+}

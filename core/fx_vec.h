@@ -113,6 +113,15 @@ static inline fx_t fx_v3_dotn(fx_vec3 a, fx_vec3 b)
  * saturates. */
 fx_t fx_v3_dot(fx_vec3 a, fx_vec3 b);
 
+/* 1 if every component of v is below 2^29 (8192 units) in magnitude:
+ * differences of two such points fit 32 bits. */
+static inline int fx_v3_small(fx_vec3 v)
+{
+    const uint32_t lim = (uint32_t)1 << 30;
+    return (uint32_t)v.x + (lim >> 1) < lim &&
+           (uint32_t)v.y + (lim >> 1) < lim && (uint32_t)v.z + (lim >> 1) < lim;
+}
+
 /* Exact |a|^2 as unsigned Q32.32; never overflows (at most 3 * 2^62). */
 uint64_t fx_v3_len2_q32(fx_vec3 a);
 
@@ -132,5 +141,11 @@ fx_t fx_v3_length(fx_vec3 a);
  * each component correctly rounded (ties away from zero). Fast: within
  * 0.7 ulp (an interpolated table instead of the polynomial). */
 fx_vec3 fx_v3_normalize(fx_vec3 a);
+
+/* Unit vector along a x b, from the exact 64-bit cross product, so tiny
+ * vectors do not round to zero; within normalize's bound of the true unit
+ * vector once the product is halved into range. The zero vector if a and
+ * b are parallel. */
+fx_vec3 fx_v3_cross_unit(fx_vec3 a, fx_vec3 b);
 
 #endif /* FX_VEC_H */

@@ -120,11 +120,158 @@
 #endif
 
 /* ---- Effect removal (default off; see docs/effects.md) ------------------
- * Each flag removes the code for one effect. A scene that needs a removed
- * effect is refused (rt_render_rows returns RT_ERR_UNSUPPORTED), never
- * rendered wrongly; make firmware derives the flags from the scene.
- * RT_NO_REFLECTION, RT_NO_REFRACTION, RT_NO_TEXTURES, RT_NO_BUMP,
- * RT_NO_SHADOWS, RT_NO_SPECULAR, RT_NO_SUPERSAMPLING, RT_NO_MULTILIGHT,
- * RT_NO_SPHERE, RT_NO_QUAD, RT_NO_BOX, RT_NO_CYLINDER, RT_NO_CONE. */
+ * -DRT_NO_<NAME> removes the code for one effect or shape, for each NAME
+ * of RT_FEATURE_LIST (rt_features.h): SHADOWS, REFLECTION, REFRACTION,
+ * TEXTURES, BUMP, SPECULAR, MULTILIGHT, SUPERSAMPLING, SPHERE, QUAD, BOX,
+ * CYLINDER, CONE. A scene that needs a removed effect is refused
+ * (rt_render_rows returns RT_ERR_UNSUPPORTED), never rendered wrongly;
+ * make firmware derives the flags from the scene (fixtrace --build-flags).
+ *
+ * The code reads each flag only as the 0/1 constant RT_HAS_<NAME> below,
+ * in ordinary conditions (`if (RT_HAS_REFRACTION && m->transparency > 0)`):
+ * the compiler drops the dead branch as #if would, and every branch still
+ * compiles in every configuration. */
+
+#ifdef RT_NO_SHADOWS
+#define RT_HAS_SHADOWS 0
+#else
+#define RT_HAS_SHADOWS 1 /* shadow rays */
+#endif
+
+#ifdef RT_NO_REFLECTION
+#define RT_HAS_REFLECTION 0
+#else
+#define RT_HAS_REFLECTION 1 /* mirror rays */
+#endif
+
+#ifdef RT_NO_REFRACTION
+#define RT_HAS_REFRACTION 0
+#else
+#define RT_HAS_REFRACTION 1 /* transmitted rays */
+#endif
+
+#ifdef RT_NO_TEXTURES
+#define RT_HAS_TEXTURES 0
+#else
+#define RT_HAS_TEXTURES 1 /* stripes and checkers */
+#endif
+
+#ifdef RT_NO_BUMP
+#define RT_HAS_BUMP 0
+#else
+#define RT_HAS_BUMP 1 /* bump-mapped normals */
+#endif
+
+#ifdef RT_NO_SPECULAR
+#define RT_HAS_SPECULAR 0
+#else
+#define RT_HAS_SPECULAR 1 /* Phong highlights */
+#endif
+
+#ifdef RT_NO_MULTILIGHT
+#define RT_HAS_MULTILIGHT 0
+#else
+#define RT_HAS_MULTILIGHT 1 /* lights after the first */
+#endif
+
+#ifdef RT_NO_SUPERSAMPLING
+#define RT_HAS_SUPERSAMPLING 0
+#else
+#define RT_HAS_SUPERSAMPLING 1 /* spp > 1 and adaptive anti-aliasing */
+#endif
+
+#ifdef RT_NO_SPHERE
+#define RT_HAS_SPHERE 0
+#else
+#define RT_HAS_SPHERE 1 /* spheres */
+#endif
+
+#ifdef RT_NO_QUAD
+#define RT_HAS_QUAD 0
+#else
+#define RT_HAS_QUAD 1 /* quads */
+#endif
+
+#ifdef RT_NO_BOX
+#define RT_HAS_BOX 0
+#else
+#define RT_HAS_BOX 1 /* boxes */
+#endif
+
+#ifdef RT_NO_CYLINDER
+#define RT_HAS_CYLINDER 0
+#else
+#define RT_HAS_CYLINDER 1 /* cylinders */
+#endif
+
+#ifdef RT_NO_CONE
+#define RT_HAS_CONE 0
+#else
+#define RT_HAS_CONE 1 /* cones */
+#endif
+
+/* ---- Derived switches (0/1) --------------------------------------------- */
+
+/* Rays that leave a surface: reflected or refracted. */
+#define RT_HAS_SECONDARY (RT_HAS_REFLECTION || RT_HAS_REFRACTION)
+
+/* Any ray besides camera rays (shadow, reflected, refracted). */
+#define RT_HAS_RAYS (RT_HAS_SHADOWS || RT_HAS_SECONDARY)
+
+/* Cylinders or cones: the shapes solved in their own frame. */
+#define RT_HAS_UPRIGHT (RT_HAS_CYLINDER || RT_HAS_CONE)
+
+/* Any shape at all (0: a firmware for a scene with no objects). */
+#define RT_HAS_SHAPES                                                         \
+    (RT_HAS_SPHERE || RT_HAS_QUAD || RT_HAS_BOX || RT_HAS_UPRIGHT)
+
+/* The cut-off of faint rays (rt_cutoff.h): with secondary rays only. */
+#define RT_CUTOFF RT_HAS_SECONDARY
+
+/* The direction grids are built (rt_dirgrid.h): RT_DIR_GRID > 0 and some
+ * ray kind they cull is in the build. */
+#define RT_DIR_GRIDS (RT_DIR_GRID > 0 && RT_HAS_RAYS)
+
+/* Culling for closed glass (rt_sealed.h), off with the direction grids
+ * (RT_DIR_GRID 0) so that suite_cull compares it too. */
+#define RT_SEALED (RT_DIR_GRIDS && RT_HAS_REFRACTION)
+
+/* ---- Compiler hints ----------------------------------------------------- */
+
+/* Inlining decisions that measurably matter for cost or stack (GCC and
+ * Clang; other compilers decide for themselves). */
+#if defined(__GNUC__)
+#define RT_ALWAYS_INLINE __attribute__((always_inline))
+#define RT_NOINLINE __attribute__((noinline))
+#else
+#define RT_ALWAYS_INLINE
+#define RT_NOINLINE
+#endif
+
+/* ---- Checks -------------------------------------------------------------- */
+
+/* The scene's field types bound the capacities. */
+#if RT_MAX_LIGHTS < 1 || RT_MAX_LIGHTS > 255
+#error "RT_MAX_LIGHTS must be 1..255: rt_scene.n_lights is a uint8_t"
+#endif
+#if RT_MAX_WIDTH < 1 || RT_MAX_WIDTH > 65535 || RT_MAX_HEIGHT < 1 || \
+    RT_MAX_HEIGHT > 65535
+#error "RT_MAX_WIDTH and RT_MAX_HEIGHT must be 1..65535 (uint16_t sizes)"
+#endif
+#if RT_MAX_SPP_SIDE < 1 || RT_MAX_SPP_SIDE > 15
+#error "RT_MAX_SPP_SIDE must be 1..15: rt_scene.spp is a uint8_t"
+#endif
+#if RT_MAX_DEPTH < 0 || RT_MAX_DEPTH > 255
+#error "RT_MAX_DEPTH must be 0..255: rt_scene.depth is a uint8_t"
+#endif
+#if RT_MAX_MATERIALS < 1 || RT_MAX_MATERIALS > 255
+#error "RT_MAX_MATERIALS must be 1..255: rt_object.material is a uint8_t"
+#endif
+#if RT_MAX_OBJECTS < 1 || RT_MAX_OBJECTS > 65535
+#error "RT_MAX_OBJECTS must be 1..65535: rt_scene.n_objects is a uint16_t"
+#endif
+#if RT_MAX_NAME < 1
+#error "RT_MAX_NAME must be at least 1"
+#endif
 
 #endif /* RT_CONFIG_H */

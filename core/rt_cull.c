@@ -77,7 +77,7 @@ static void row_plane_set(row_plane *rp, const rt_cam_frame *cf, fx_t sy)
     rp->sy = sy;
     rp->len = fx_v3_length(fu);
     rp->f = fx_v3_normalize(fu);
-    rp->nr = rt_cross_unit(rp->f, cf->right);
+    rp->nr = fx_v3_cross_unit(rp->f, cf->right);
 }
 
 /* tan(phi + sg * alpha) from the two tangents; +-S_INF past 90 degrees. */
@@ -167,17 +167,16 @@ static int64_t column(const rt_cam_frame *cf, int64_t s, unsigned width)
     return floor_div(k + (int64_t)width * cf->n, 2 * (int64_t)cf->n);
 }
 
-unsigned rt_cull_row(const rt_scene *s, const rt_cam_frame *cf,
-                     unsigned width, unsigned height, unsigned y,
-                     rt_span *spans)
+void rt_cull_row(const rt_scene *s, const rt_cam_frame *cf, unsigned width,
+                 unsigned height, unsigned y, rt_row_spans *rs)
 {
+    rt_span *spans = rs->span;
     unsigned count = 0;
     const unsigned n = cf->n;
     row_plane rp[RT_MAX_SPP_SIDE];
     for (unsigned j = 0; j < n; j++) {
-        int32_t ky = (int32_t)(height * n) - (int32_t)(2 * y * n + 2 * j + 1);
         row_plane_set(&rp[j], cf,
-                      fx_sat64(((int64_t)ky * cf->step + 0x8000) >> 16));
+                      rt_cam_offset(cf, rt_cam_row_k(height, n, y, j)));
     }
     for (unsigned i = 0; i < s->n_objects; i++) {
         int64_t lo = S_INF, hi = -S_INF;
@@ -205,5 +204,5 @@ unsigned rt_cull_row(const rt_scene *s, const rt_cam_frame *cf,
         spans[count].x1 = (int16_t)x1;
         count++;
     }
-    return count;
+    rs->count = count;
 }

@@ -2,14 +2,7 @@
 #ifndef RT_CULL_H
 #define RT_CULL_H
 
-#include "rt_internal.h"
-
-/* Per-frame camera frame (see rt_render.c). */
-typedef struct {
-    fx_vec3 w, right, up;
-    int64_t step; /* screen offset per unit of k: half / (n H), 32 frac bits */
-    unsigned n;   /* grid side */
-} rt_cam_frame;
+#include "rt_camera.h"
 
 /* Columns of one row an object may be hit in: x0 <= x <= x1. */
 typedef struct {
@@ -17,12 +10,17 @@ typedef struct {
     int16_t x0, x1;
 } rt_span;
 
-/* Fills spans[] (in object order) with the objects that camera rays of
- * pixel row y may hit, with their column ranges; returns their count. The
- * ranges are conservative: an object left out, or a column outside its
- * range, cannot be hit by any sample of that pixel. */
-unsigned rt_cull_row(const rt_scene *s, const rt_cam_frame *cf,
-                     unsigned width, unsigned height, unsigned y,
-                     rt_span *spans);
+/* The objects camera rays of one pixel row may hit, in object order. */
+typedef struct {
+    rt_span span[RT_MAX_OBJECTS];
+    unsigned count;
+} rt_row_spans;
+
+/* Fills *rs (in object order) with the objects that camera rays of pixel
+ * row y may hit, with their column ranges. The ranges are conservative:
+ * an object left out, or a column outside its range, cannot be hit by any
+ * sample of that pixel. */
+void rt_cull_row(const rt_scene *s, const rt_cam_frame *cf, unsigned width,
+                 unsigned height, unsigned y, rt_row_spans *rs);
 
 #endif /* RT_CULL_H */

@@ -47,14 +47,6 @@ typedef struct {
     int lower, upper; /* hemispheres of u.y it reaches */
 } cone_box;
 
-/* The offset rt_trace gives the origin of a ray leaving o (shade()). */
-static fx_t origin_offset(const rt_object *o)
-{
-    if ((o->kind == RT_CYLINDER || o->kind == RT_CONE) && o->ushift > 4)
-        return (fx_t)1 << (o->ushift + 2);
-    return RT_EPS;
-}
-
 static fx_t clamp1(int64_t v)
 {
     return v < -FX_ONE ? -FX_ONE : (v > FX_ONE ? FX_ONE : (fx_t)v);
@@ -120,7 +112,7 @@ void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
     fx_t off_max = RT_EPS;
     for (unsigned i = 0; i < n; i++) {
         const rt_object *o = &s->obj[i];
-        fx_t off = origin_offset(o);
+        fx_t off = rt_origin_offset(o);
         if (off > off_max)
             off_max = off;
         int64_t d = (int64_t)fx_v3_length(fx_v3_sub(o->bc, lp)) + o->br;
@@ -222,19 +214,16 @@ void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s)
     if (gs->words == 0)
         return;
     /* Shadow rays are the most numerous: lights first. */
-#if !defined(RT_NO_SHADOWS)
-    for (unsigned i = 0; s->shadows && i < s->n_lights && i < RT_MAX_LIGHTS;
+    for (unsigned i = 0; RT_HAS_SHADOWS && s->shadows && i < s->n_lights &&
+                         i < RT_MAX_LIGHTS;
          i++)
         gs->light[i] = add_grid(gs, &used, &next, s, s->light[i].pos, 0);
-#endif
-#if !defined(RT_NO_REFLECTION) || !defined(RT_NO_REFRACTION)
-    for (unsigned i = 0; i < s->n_objects; i++) {
+    for (unsigned i = 0; RT_HAS_SECONDARY && i < s->n_objects; i++) {
         const rt_object *o = &s->obj[i];
         const rt_material *m = &s->mat[o->material];
         if (m->reflect > 0 || m->transparency > 0)
             gs->from[i] = add_grid(gs, &used, &next, s, o->bc, o->br);
     }
-#endif
 }
 
 #endif

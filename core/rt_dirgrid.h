@@ -2,21 +2,13 @@
 #ifndef RT_DIRGRID_H
 #define RT_DIRGRID_H
 
-#include "rt_internal.h"
-
-/* 1 when the grids are built: RT_DIR_GRID > 0 and some ray kind they cull
- * (shadow, reflected, refracted) is in the build. */
-#if RT_DIR_GRID > 0 &&                                                        \
-    (!defined(RT_NO_SHADOWS) || !defined(RT_NO_REFLECTION) ||                 \
-     !defined(RT_NO_REFRACTION))
-#define RT_DIR_GRIDS 1
-#else
-#define RT_DIR_GRIDS 0
-#endif
-
-#if RT_DIR_GRIDS
+#include "rt_ray.h"
 
 #define RT_DIR_NONE 0xFFu /* no grid: test every object */
+
+/* RT_DIR_GRIDS (rt_config.h): the grids are built; else the stubs at the
+ * end answer "no grid" and every ray tests every object. */
+#if RT_DIR_GRIDS
 
 /* Directions u from a ball (a light, or an object rays leave from), on a
  * grid over (u.x, u.z) per hemisphere of u.y: each cell lists the objects
@@ -69,6 +61,58 @@ static inline const uint32_t *rt_dir_cell(const rt_dir_grid *g, fx_t ux,
         iz = RT_DIR_GRID - 1;
     unsigned c = ((uy > 0) * RT_DIR_GRID + iz) * RT_DIR_GRID + ix;
     return g->cell + c * words;
+}
+
+/* Rays leaving object i (i < n_objects) in direction d: 1 with *cand set
+ * to what they may hit (rt_dir_cell) if i has a grid, else 0. */
+static inline int rt_dir_from_object(const rt_dir_grids *gs, unsigned i,
+                                     unsigned n_objects, fx_vec3 d,
+                                     const uint32_t **cand)
+{
+    if (i >= n_objects || gs->from[i] == RT_DIR_NONE)
+        return 0;
+    *cand = rt_dir_cell(&gs->grid[gs->from[i]], d.x, d.y, d.z, gs->words);
+    return 1;
+}
+
+/* Shadow rays towards light li along unit direction ld: 1 with *cand set
+ * to what may block them if the light has a grid, else 0. */
+static inline int rt_dir_to_light(const rt_dir_grids *gs, unsigned li,
+                                  fx_vec3 ld, const uint32_t **cand)
+{
+    if (gs->light[li] == RT_DIR_NONE)
+        return 0;
+    /* Seen from the light, the ray runs along -ld. */
+    *cand = rt_dir_cell(&gs->grid[gs->light[li]], -ld.x, -ld.y, -ld.z,
+                        gs->words);
+    return 1;
+}
+
+#else /* the stubs: no grid anywhere */
+
+typedef struct {
+    unsigned words;
+} rt_dir_grids;
+
+static inline void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s)
+{
+    (void)s;
+    gs->words = 0;
+}
+
+static inline int rt_dir_from_object(const rt_dir_grids *gs, unsigned i,
+                                     unsigned n_objects, fx_vec3 d,
+                                     const uint32_t **cand)
+{
+    (void)gs, (void)i, (void)n_objects, (void)d, (void)cand;
+    return 0;
+}
+
+static inline int rt_dir_to_light(const rt_dir_grids *gs, unsigned li,
+                                  fx_vec3 ld, const uint32_t **cand)
+{
+    (void)gs, (void)li, (void)ld, (void)cand;
+    return 0;
 }
 
 #endif

@@ -9,7 +9,7 @@
  * size or distance: the discriminant keeps its precision for small and far
  * objects alike. See docs/numerics.md.
  */
-#include "rt_internal.h"
+#include "rt_shape.h"
 
 /* Ulps (plus 2^-17 of the size) by which quads reach past their edges. */
 #define RT_QUAD_SLACK 2
@@ -23,28 +23,16 @@
 #define RT_LINEAR_MIN_B 256
 #define RT_STEEP_MIN_A 256
 
-#if !defined(RT_NO_SPHERE) || !defined(RT_NO_QUAD) || !defined(RT_NO_BOX) || \
-    !defined(RT_NO_CYLINDER) || !defined(RT_NO_CONE)
-#define RT_ANY_SHAPE 1
-#else
-#define RT_ANY_SHAPE 0 /* a firmware for a scene with no objects */
-#endif
-
-#if RT_ANY_SHAPE
 /* Closest approach of the ray to the bounding sphere (c, r). Returns 0 when
  * the ray misses it or meets it only outside (tmin, tmax); else *tca
  * (Q16.16, may exceed the fx_t range), *disc = r^2 - |h|^2 (Q32.32, the
  * squared half chord) and h = c - (o + tca d). Cheap rejections come first:
  * most tests end at the first comparison. */
 
-
-/* small: the object's centre and radius are rt_small3 (rt_object.small).
+/* small: the object's centre and radius are fx_v3_small (rt_object.small).
  * Inlined into each shape's test: the call and its nine arguments cost
  * more than the common rejection itself. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
+RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
                           const rt_ray *ray, fx_t tmin, fx_t tmax,
                           int64_t *tca, uint64_t *disc, int64_t h[3])
 {
@@ -109,38 +97,6 @@ static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
     return 1;
 }
 
-uint32_t rt_udiv64_32(uint64_t n, uint32_t d)
-{
-    /* Long division in base 2^16 after normalising d (Knuth's algorithm D
-     * as in Hacker's Delight, divlu): two 32-bit hardware divides on a
-     * Cortex-M3 instead of a 64-bit library divide. Unsigned wrap-around
-     * in the intermediate products is part of the method. */
-    const uint32_t b = 65536;
-    uint32_t u1 = (uint32_t)(n >> 32), u0 = (uint32_t)n;
-    int s = fx_clz32(d);
-    uint32_t v = d << s, vn1 = v >> 16, vn0 = v & 0xFFFF;
-    uint32_t un32 = s ? (u1 << s) | (u0 >> (32 - s)) : u1;
-    uint32_t un10 = u0 << s, un1 = un10 >> 16, un0 = un10 & 0xFFFF;
-    uint32_t q1 = un32 / vn1, rhat = un32 - q1 * vn1;
-    while (q1 >= b || q1 * vn0 > b * rhat + un1) {
-        q1--;
-        rhat += vn1;
-        if (rhat >= b)
-            break;
-    }
-    uint32_t un21 = un32 * b + un1 - q1 * v;
-    uint32_t q0 = un21 / vn1;
-    rhat = un21 - q0 * vn1;
-    while (q0 >= b || q0 * vn0 > b * rhat + un0) {
-        q0--;
-        rhat += vn1;
-        if (rhat >= b)
-            break;
-    }
-    return q1 * b + q0;
-}
-
-#if !defined(RT_NO_BOX) || !defined(RT_NO_CYLINDER) || !defined(RT_NO_CONE)
 /* Distance along d (d != 0) from coordinate o to the plane at coordinate
  * p, truncated: hit_quad's formula for an axis-aligned quad, so that
  * shapes lying in such a quad's plane tie with it exactly. A distance of
@@ -153,10 +109,9 @@ static int64_t plane_t(int64_t p, fx_t o, fx_t d)
     int neg = (num < 0) != (d < 0);
     if ((un >> 32) >= ud)
         return neg ? -INT64_MAX : INT64_MAX;
-    int64_t q = rt_udiv64_32(un, ud); /* the same truncation as C's / */
+    int64_t q = fx_udiv64_32(un, ud); /* the same truncation as C's / */
     return neg ? -q : q;
 }
-#endif
 
 /* Accepts t if tmin < t < tmax and nearer than the best so far. */
 static int take(int64_t t, fx_t tmin, fx_t *best)
@@ -168,9 +123,6 @@ static int take(int64_t t, fx_t tmin, fx_t *best)
     return 0;
 }
 
-#endif /* RT_ANY_SHAPE */
-
-#if !defined(RT_NO_SPHERE)
 static int hit_sphere(const rt_object *o, const rt_ray *r, fx_t tmin,
                       fx_t tmax, fx_t *t, uint8_t *part)
 {
@@ -189,9 +141,6 @@ static int hit_sphere(const rt_object *o, const rt_ray *r, fx_t tmin,
     return 1;
 }
 
-#endif
-
-#if !defined(RT_NO_QUAD)
 static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
                     fx_t tmax, fx_t *t, uint8_t *part)
 {
@@ -218,7 +167,7 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
     uint32_t ud = (uint32_t)(den24 < 0 ? -den24 : den24);
     if ((un >> 32) >= ud)
         return 0;
-    uint32_t tq = rt_udiv64_32(un, ud);
+    uint32_t tq = fx_udiv64_32(un, ud);
     if ((int64_t)tq <= tmin || (int64_t)tq >= tmax)
         return 0;
     const fx_t tt = (fx_t)tq; /* below tmax, so it fits */
@@ -264,9 +213,6 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
     return 1;
 }
 
-#endif
-
-#if !defined(RT_NO_BOX)
 static int hit_box(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                    fx_t *t, uint8_t *part)
 {
@@ -336,9 +282,6 @@ static int hit_box(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
     return 0;
 }
 
-#endif
-
-#if !defined(RT_NO_CYLINDER) || !defined(RT_NO_CONE)
 /* Scales v by 2^-k, rounding to nearest (k may be negative). */
 static fx_t to_frame(int64_t v, int k)
 {
@@ -479,40 +422,40 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
     return found;
 }
 
-#endif
-
 int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                  fx_t *t, uint8_t *part)
 {
+    /* A kind this build removed never hits (rendering refuses scenes
+     * with one): its case falls out of the switch. */
     switch (o->kind) {
-#if !defined(RT_NO_SPHERE)
     case RT_SPHERE:
+        if (!RT_HAS_SPHERE)
+            break;
         return hit_sphere(o, r, tmin, tmax, t, part);
-#endif
-#if !defined(RT_NO_QUAD)
     case RT_QUAD:
+        if (!RT_HAS_QUAD)
+            break;
         /* The plane test itself is as cheap as a bounding sphere and
          * rejects rays leaving the plane's side at once. */
         return hit_quad(o, r, tmin, tmax, t, part);
-#endif
-#if !defined(RT_NO_BOX)
     case RT_BOX: {
         int64_t tca, h[3];
         uint64_t disc;
+        if (!RT_HAS_BOX)
+            break;
         if (!bsphere(&o->bc, o->br, o->small, r, tmin, tmax, &tca, &disc, h))
             return 0;
         return hit_box(o, r, tmin, tmax, t, part);
     }
-#endif
-#if !defined(RT_NO_CYLINDER) || !defined(RT_NO_CONE)
     case RT_CYLINDER:
     case RT_CONE:
+        if (!RT_HAS_UPRIGHT)
+            break;
         return hit_upright(o, r, tmin, tmax, t, part);
-#endif
-    default: /* a kind this build removed; rendering refuses such scenes */
-        (void)r, (void)tmin, (void)tmax, (void)t, (void)part;
-        return 0;
+    default:
+        break;
     }
+    return 0;
 }
 
 fx_vec3 rt_normal(const rt_object *o, fx_vec3 p, uint8_t part)

@@ -14,21 +14,6 @@
 #include "rt_libc.h"
 #include "rt_lex.h"
 
-/* The scene's field types bound the capacities in rt_config.h. */
-#if RT_MAX_LIGHTS < 1 || RT_MAX_LIGHTS > 255
-#error "RT_MAX_LIGHTS must be 1..255: rt_scene.n_lights is a uint8_t"
-#endif
-#if RT_MAX_WIDTH < 1 || RT_MAX_WIDTH > 65535 || RT_MAX_HEIGHT < 1 || \
-    RT_MAX_HEIGHT > 65535
-#error "RT_MAX_WIDTH and RT_MAX_HEIGHT must be 1..65535 (uint16_t sizes)"
-#endif
-#if RT_MAX_SPP_SIDE < 1 || RT_MAX_SPP_SIDE > 15
-#error "RT_MAX_SPP_SIDE must be 1..15: rt_scene.spp is a uint8_t"
-#endif
-#if RT_MAX_DEPTH < 0 || RT_MAX_DEPTH > 255
-#error "RT_MAX_DEPTH must be 0..255: rt_scene.depth is a uint8_t"
-#endif
-
 #define LIGHT_MAX FX_INT(16) /* light and ambient colours, raw Q16.16 */
 
 /* ---- Scene-wide statements ---------------------------------------------- */
@@ -238,7 +223,6 @@ rt_status rt_parse(const char *text, size_t len, rt_scene *s,
         (unsigned char)text[1] == 0xBB && (unsigned char)text[2] == 0xBF)
         p.next = p.line_off = p.line_end = 3;
     rt_scene_init(s);
-    s->features = 0;
     while (p.next < len) {
         rt_lex_start_line(&p);
         TRY(rt_lex_next(&p, &kw));

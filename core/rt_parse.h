@@ -26,7 +26,7 @@ typedef struct {
  * Never reads outside text[0..len); time is linear in len; no recursion,
  * no allocation. Returns RT_OK; or RT_ERR_PARSE, RT_ERR_CAPACITY or
  * RT_ERR_DEGENERATE with *err filled in (err must not be NULL). After an
- * error *s holds a partial scene: do not render it. s->features is left 0. */
+ * error *s holds a partial scene: do not render it. */
 rt_status rt_parse(const char *text, size_t len, rt_scene *s,
                    rt_parse_error *err);
 

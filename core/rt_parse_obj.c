@@ -6,16 +6,6 @@
 #include "rt_libc.h"
 #include "rt_lex.h"
 
-/* The scene's field types bound the capacities in rt_config.h. */
-#if RT_MAX_MATERIALS < 1 || RT_MAX_MATERIALS > 255
-#error "RT_MAX_MATERIALS must be 1..255: rt_object.material is a uint8_t"
-#endif
-#if RT_MAX_OBJECTS < 1 || RT_MAX_OBJECTS > 65535
-#error "RT_MAX_OBJECTS must be 1..65535: rt_scene.n_objects is a uint16_t"
-#endif
-#if RT_MAX_NAME < 1
-#error "RT_MAX_NAME must be at least 1"
-#endif
 #if RT_CAP_BOTTOM != 1 || RT_CAP_TOP != 2
 #error "the 'caps' words are listed in RT_CAP_* bit order"
 #endif

@@ -74,8 +74,8 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
                          int y1, uint8_t *row_buf, rt_row_fn fn, void *ctx,
                          rt_stats *stats);
 
-/* Effects the scene needs, as RT_FEAT_* bits (also stored by the parser in
- * s->features). spp > 1 adds RT_FEAT_SUPERSAMPLING. */
+/* Effects the scene needs at spp samples per pixel, as RT_FEAT_* bits
+ * (rt_features.h); spp > 1 adds RT_FEAT_SUPERSAMPLING. */
 uint32_t rt_scene_features(const rt_scene *s, uint8_t spp);
 
 /* RT_FEAT_* bits this build can render (all, less the RT_NO_* removals). */

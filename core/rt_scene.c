@@ -1,6 +1,6 @@
 /* rt_scene: scene defaults and the per-object constants the tracer uses. */
 #include "rt_libc.h"
-#include "rt_internal.h"
+#include "rt_scene.h"
 
 /* Largest cone slope r / h: flatter cones lose the unit-frame precision
  * (k^2 must stay well inside Q16.16). */
@@ -23,26 +23,6 @@ void rt_scene_init(rt_scene *s)
     s->spp = 1;
     s->depth = RT_MAX_DEPTH;
     s->shadows = 1;
-}
-
-/* Unit vector along an exact 64-bit vector (for normals from cross
- * products of tiny edges, which would round to zero in Q16.16). */
-static fx_vec3 norm64(int64_t x, int64_t y, int64_t z)
-{
-    while (x > FX_MAX / 2 || x < FX_MIN / 2 || y > FX_MAX / 2 ||
-           y < FX_MIN / 2 || z > FX_MAX / 2 || z < FX_MIN / 2) {
-        x /= 2;
-        y /= 2;
-        z /= 2;
-    }
-    return fx_v3_normalize(fx_v3((fx_t)x, (fx_t)y, (fx_t)z));
-}
-
-fx_vec3 rt_cross_unit(fx_vec3 a, fx_vec3 b)
-{
-    return norm64((int64_t)a.y * b.z - (int64_t)a.z * b.y,
-                  (int64_t)a.z * b.x - (int64_t)a.x * b.z,
-                  (int64_t)a.x * b.y - (int64_t)a.y * b.x);
 }
 
 static int is_zero(fx_vec3 v)
@@ -86,7 +66,7 @@ rt_status rt_object_prepare(rt_object *o)
 {
     o->flat = 0;
     rt_status st = prepare_shape(o);
-    o->small = st == RT_OK && o->br < ((fx_t)1 << 29) && rt_small3(o->bc);
+    o->small = st == RT_OK && o->br < ((fx_t)1 << 29) && fx_v3_small(o->bc);
     return st;
 }
 
@@ -104,11 +84,11 @@ static rt_status prepare_shape(rt_object *o)
         fx_vec3 e1 = o->b, e2 = o->c;
         if (is_zero(e1) || is_zero(e2))
             return RT_ERR_DEGENERATE;
-        o->n = rt_cross_unit(e1, e2);
+        o->n = fx_v3_cross_unit(e1, e2);
         if (is_zero(o->n))
             return RT_ERR_DEGENERATE; /* parallel edges */
-        o->pu = rt_cross_unit(e2, o->n);
-        o->pv = rt_cross_unit(o->n, e1);
+        o->pu = fx_v3_cross_unit(e2, o->n);
+        o->pv = fx_v3_cross_unit(o->n, e1);
         o->lu = fx_v3_dot(e1, o->pu);
         o->lv = fx_v3_dot(e2, o->pv);
         if (o->lu <= 0 || o->lv <= 0)

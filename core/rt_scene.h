@@ -13,6 +13,7 @@
 #include <stdint.h>
 #include "rt_config.h"
 #include "fx_vec.h"
+#include "rt_features.h"
 
 /* ---- Configuration check -------------------------------------------------
  * The capacities size rt_scene, so an application compiled with other
@@ -144,26 +145,10 @@ typedef struct {
     uint8_t n_materials;
     uint8_t n_lights;
     uint16_t n_objects;
-    uint32_t features;  /* RT_FEAT_* bits, derived by rt_scene_features() */
     rt_material mat[RT_MAX_MATERIALS];
     rt_light light[RT_MAX_LIGHTS];
     rt_object obj[RT_MAX_OBJECTS];
 } rt_scene;
-
-/* Effects a scene needs (rt_scene.features). */
-#define RT_FEAT_SHADOWS      (1u << 0)
-#define RT_FEAT_REFLECTION   (1u << 1)
-#define RT_FEAT_REFRACTION   (1u << 2)
-#define RT_FEAT_TEXTURES     (1u << 3)
-#define RT_FEAT_BUMP         (1u << 4)
-#define RT_FEAT_SPECULAR     (1u << 5)
-#define RT_FEAT_MULTILIGHT   (1u << 6)
-#define RT_FEAT_SUPERSAMPLING (1u << 7)
-#define RT_FEAT_SPHERE       (1u << 8)
-#define RT_FEAT_QUAD         (1u << 9)
-#define RT_FEAT_BOX          (1u << 10)
-#define RT_FEAT_CYLINDER     (1u << 11)
-#define RT_FEAT_CONE         (1u << 12)
 
 /* Sets defaults: empty scene, camera at (0,0,-10) looking at the origin,
  * fov 60, black background, white ambient, 320x240, 1 spp, depth 5. */

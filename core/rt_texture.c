@@ -1,5 +1,5 @@
 /* rt_texture: procedural textures and bump noise, owned by materials. */
-#include "rt_internal.h"
+#include "rt_texture.h"
 
 /* Cell index of p - a along one axis for cells of size m->tex_scale:
  * floor((p - a) / size), exact at any distance from the origin a (the

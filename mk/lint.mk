@@ -59,8 +59,6 @@ LINT_TIDY_FLAGS := --quiet --warnings-as-errors='*' \
 
 # Per-file exclusions, for analyzer false positives that need a change to
 # the file to go away (docs/static-analysis.md, "Per-file exclusions").
-LINT_TIDY_NOT_core/rt_render.c := ,-clang-analyzer-core.DivideZero,\
--clang-analyzer-core.UndefinedBinaryOperatorResult
 LINT_TIDY_NOT_port/posix/main.c := ,-clang-analyzer-core.NonNullParamChecker,\
 -bugprone-not-null-terminated-result
 LINT_TIDY_NOT_port/baremetal/main.c := ,-bugprone-branch-clone

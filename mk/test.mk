@@ -16,7 +16,18 @@ $(HOST_BUILD)/tests/test_%: $(HOST_BUILD)/tests/test_%.o $(TEST_HARNESS_OBJ) \
 	@$(if $(Q),echo "  LD      $@")
 	$(Q)$(CC) $(HOST_LDFLAGS) $^ -o $@ $(HOST_LIBS)
 
-$(HOST_BUILD)/tests:
+# test_stability is its runner plus the case files in tests/stability/
+# (not named test_*.c, so they are no binaries of their own).
+STAB_SRC := $(sort $(wildcard tests/stability/*.c))
+STAB_OBJ := $(STAB_SRC:tests/%.c=$(HOST_BUILD)/tests/%.o)
+$(HOST_BUILD)/tests/test_stability: $(STAB_OBJ)
+$(HOST_BUILD)/tests/stability/%.o: tests/stability/%.c $(HOST_STAMP) \
+                                   | $(HOST_BUILD)/tests/stability
+	@$(if $(Q),echo "  CC      $<")
+	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) -Wno-missing-prototypes -Icore \
+	    -Iport/posix -Itests -Itests/stability -MMD -MP -c $< -o $@
+
+$(HOST_BUILD)/tests $(HOST_BUILD)/tests/stability:
 	$(Q)mkdir -p $@
 
 # Objects are made by pattern rules; keep them (make would otherwise delete
@@ -24,6 +35,7 @@ $(HOST_BUILD)/tests:
 .SECONDARY:
 
 -include $(TEST_SRC:tests/%.c=$(HOST_BUILD)/tests/%.d)
+-include $(STAB_OBJ:.o=.d)
 
 # The random scene generator of the randomized differential test
 # (tools/random_test.sh): a host tool, not a unit-test binary.

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Every scene, rendered by the fixed-point core and by the double
 # reference at 320x240, 1 spp, is close to the reference
-# (tests/reference_floors.txt); the seed scene meets the target:
+# (tests/reference_floors.txt); the seed scene meets the accuracy target:
 # PSNR >= 45 dB, at least 99.5% of pixels within 2/255 and no outlier
 # pixel away from a silhouette edge.
 set -u

@@ -1,7 +1,7 @@
 /*
  * What the tracer skips.
  * The ray cut-off (rt_options.trace_all = 0) must stay below its budget:
- * - the colour bounds rt_tracer_prepare() derives hold for every ray
+ * - the colour bounds rt_tracer_init() derives hold for every ray
  *   traced in full, in random scenes with bright lights, mirrors and
  *   glass;
  * - a render with the cut-off differs from one that traces every ray by
@@ -153,20 +153,17 @@ static long bound_trial(long *rays, long *over, long *mats)
 {
     static rt_scene s;
     static rt_tracer tr;
+    rt_work wk;
+    rt_options opt;
     unsigned depth = 1 + (unsigned)pick(RT_MAX_DEPTH);
-    uint16_t blocker[RT_MAX_LIGHTS];
-    uint32_t budget = 0;
     long worst = 0;
     random_scene(&s, depth);
-    s.features = rt_scene_features(&s, 1);
-    memset(&tr, 0, sizeof tr);
-    memset(blocker, 0xFF, sizeof blocker);
-    tr.scene = &s;
-    tr.max_depth = depth;
-    tr.feat = s.features;
-    tr.blocker = blocker;
-    tr.budget = &budget; /* 0: every ray is traced */
-    rt_tracer_prepare(&tr);
+    rt_options_from_scene(&opt, &s);
+    opt.spp = 1;
+    opt.depth = (uint8_t)depth;
+    opt.trace_all = 1; /* a budget of 0: every ray is traced */
+    rt_tracer_init(&tr, &s, &opt);
+    rt_work_init(&wk, NULL);
     check_spec_min(&tr, mats);
     for (int k = 0; k < 300; k++) {
         unsigned d = (unsigned)pick((int)depth + 1);
@@ -176,7 +173,8 @@ static long bound_trial(long *rays, long *over, long *mats)
                             unit(uni(-3, 6)));
         rt_ray r;
         rt_ray_set(&r, o, fx_v3_normalize(fx_v3_sub(aim, o)));
-        rt_rgb c = rt_trace(&tr, &r, d, FX_ONE, 0xFFFFu, 0xFFFFu);
+        rt_rgb c =
+            rt_trace(&tr, &wk, &r, d, FX_ONE, RT_NO_OBJECT, RT_NO_OBJECT);
         fx_t top = c.r > c.g ? (c.r > c.b ? c.r : c.b)
                              : (c.g > c.b ? c.g : c.b);
         long ratio = (long)((int64_t)top * 1000 / tr.bound[depth - d]);

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "harness.h"
+#include "rt_shape.h"
 #include "rt_trace.h"
 
 #define D2F(x) ((fx_t)lround((x) * 65536.0))

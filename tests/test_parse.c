@@ -401,7 +401,6 @@ static void test_full_scene(void)
     CHECK_EQ(S.height, 480);
     CHECK_EQ(S.spp, 4);
     CHECK_EQ(S.depth, 3);
-    CHECK_EQ(S.features, 0);
     CHECK_EQ(S.cam.eye.y, FX_INT(5));
     CHECK_EQ(S.cam.eye.z, FX_INT(-20));
     CHECK_EQ(S.cam.look.y, FX_ONE);

@@ -1,16 +1,14 @@
 /*
  * Tests of the host reference tools: the double renderer's intersections
  * (hand-computed hits, misses, hits from inside, tangents and hits behind
- * the origin for every shape), its noise, pixels and counters on tiny
- * scenes, the PPM reader and writer, and the image comparison.
+ * the origin for every shape), its noise, and its pixels and counters on
+ * tiny scenes. The PPM reader and writer are tested in test_ppm.c, the
+ * image comparison in test_compare.c.
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 #include "harness.h"
-#include "compare.h"
-#include "ppm.h"
 #include "ref_render.h"
 
 /* |a - b| <= tol for doubles; prints both on failure. */
@@ -532,172 +530,8 @@ static void test_render_texture_bands(void)
     CHECK_EQ(render(&s, 8, 6, 4, 3, &k, NULL), RT_ERR_DEGENERATE);
 }
 
-/* ---- PPM and compare ------------------------------------------------- */
-
-static char tmpdir[] = "/tmp/fixtrace-ref-XXXXXX";
-
-/* Paths of the test's files in tmpdir, filled in by main(). */
-static char p_rt[64], p_missing[64], p_a[64], p_b[64], p_c[64], p_d[64];
-
-static int parse_str(const char *text, ppm_image *img, char *err)
-{
-    return ppm_parse((const uint8_t *)text, strlen(text), img, err, 160);
-}
-
-static void test_ppm(void)
-{
-    ppm_image a, b;
-    char err[160];
-    FILE *f;
-    char hdr[32];
-    int i;
-    CHECK_EQ(ppm_alloc(&a, 3, 2), 0);
-    for (i = 0; i < 18; i++)
-        a.data[i] = (uint8_t)(i * 14 + 1);
-    CHECK_EQ(ppm_save(p_rt, &a, err, sizeof err), 0);
-    CHECK_EQ(ppm_read(p_rt, &b, err, sizeof err), 0);
-    CHECK(b.width == 3 && b.height == 2 && b.data &&
-          memcmp(a.data, b.data, 18) == 0);
-    ppm_free(&b);
-    ppm_free(&a);
-    CHECK(a.data == NULL);
-    f = tmpfile();
-    CHECK(f != NULL);
-    if (f) {
-        CHECK_EQ(ppm_write_header(f, 3, 2), 0);
-        rewind(f);
-        memset(hdr, 0, sizeof hdr);
-        CHECK_EQ(fread(hdr, 1, sizeof hdr - 1, f), 11);
-        CHECK(strcmp(hdr, "P6\n3 2\n255\n") == 0);
-        fclose(f);
-    }
-    /* Comments and odd whitespace are fine. */
-    CHECK_EQ(parse_str("P6\n# made by hand\n2\t1 # w h\n255\rABCDEF", &a,
-                       err), 0);
-    CHECK(a.width == 2 && a.height == 1 && a.data && a.data[5] == 'F');
-    ppm_free(&a);
-    CHECK_EQ(parse_str("P6 1 1 255 xyz+trailing", &a, err), 0);
-    ppm_free(&a);
-    /* Refusals, each with its reason. */
-    CHECK_EQ(parse_str("P3 1 1 255 0 0 0", &a, err), -1);
-    CHECK(strstr(err, "P6") != NULL);
-    CHECK_EQ(parse_str("P6 1 1 65535 xxxxxx", &a, err), -1);
-    CHECK(strstr(err, "maxval") != NULL);
-    CHECK_EQ(parse_str("P6 2 1 255 abcde", &a, err), -1);
-    CHECK(strstr(err, "truncated") != NULL);
-    CHECK(a.data == NULL && a.width == 0);
-    CHECK_EQ(parse_str("P6 0 1 255 ", &a, err), -1);
-    CHECK_EQ(parse_str("P6 2x1 255 abcdef", &a, err), -1);
-    CHECK_EQ(parse_str("P6 2 ", &a, err), -1);
-    CHECK(strstr(err, "height") != NULL);
-    CHECK_EQ(parse_str("P6 -2 1 255 abcdef", &a, err), -1);
-    CHECK_EQ(parse_str("P6 99999999999 1 255 ", &a, err), -1);
-    CHECK_EQ(parse_str("P6 1 1 255", &a, err), -1);
-    CHECK_EQ(parse_str("", &a, err), -1);
-    CHECK_EQ(ppm_read(p_missing, &a, err, sizeof err), -1);
-    CHECK(strstr(err, "missing.ppm") != NULL);
-}
-
-/* A w x h image of one grey level. */
-static void flat(ppm_image *img, int w, int h, uint8_t v)
-{
-    ppm_alloc(img, w, h);
-    memset(img->data, v, (size_t)w * h * 3);
-}
-
-static void test_compare(void)
-{
-    ppm_image a, b, c, heat;
-    compare_result r;
-    uint8_t px[3];
-    char err[160];
-    char *argv[8];
-    flat(&a, 10, 10, 100);
-    flat(&b, 10, 10, 100);
-    CHECK_EQ(compare_images(&a, &b, &r), 0);
-    CHECK(isinf(r.psnr) && r.psnr > 0);
-    CHECK(r.max_err == 0 && r.mae == 0 && r.bad == 0 && r.outliers == 0);
-    /* One channel off by 30: MSE = 900 / 300 = 3. */
-    b.data[3 * 55] = 130;
-    CHECK_EQ(compare_images(&a, &b, &r), 0);
-    CHECK_DBL(r.psnr, 10 * log10(65025.0 / 3), 1e-9);
-    CHECK_EQ(r.max_err, 30);
-    CHECK_DBL(r.mae, 0.1, 1e-12);
-    CHECK_EQ(r.bad, 1);
-    CHECK_DBL(r.bad_pct, 1.0, 1e-12);
-    CHECK_EQ(r.outliers, 0);
-    /* An outlier of A (the render) on flat ground of B (the reference):
-     * a speckle, although it makes A's own neighbourhood an edge. */
-    b.data[3 * 55] = 100;
-    a.data[3 * 55 + 2] = 200;
-    CHECK_EQ(compare_images(&a, &b, &r), 0);
-    CHECK(r.outliers == 1 && r.interior_outliers == 1 && r.max_err == 100);
-    /* A bright neighbour in B: an edge of the reference, no speckle; A
-     * misses it too, so that is a second outlier. */
-    memset(b.data + 3 * 56, 250, 3);
-    CHECK_EQ(compare_images(&a, &b, &r), 0);
-    CHECK(r.outliers == 2 && r.interior_outliers == 0);
-    memset(b.data + 3 * 56, 100, 3);
-    a.data[3 * 55 + 2] = 100;
-    b.data[3 * 55] = 130; /* back to one channel off by 30 */
-    flat(&c, 10, 9, 100);
-    CHECK_EQ(compare_images(&a, &c, &r), -1);
-    /* Heat colours. */
-    compare_heat(0, px);
-    CHECK(px[0] == 0 && px[1] == 0 && px[2] == 0);
-    compare_heat(3, px);
-    CHECK(px[0] == 0 && px[1] == 0 && px[2] == 255);
-    compare_heat(15, px);
-    CHECK(px[0] == 0 && px[1] == 255 && px[2] == 0);
-    compare_heat(63, px);
-    CHECK(px[0] == 255 && px[1] == 255 && px[2] == 0);
-    compare_heat(255, px);
-    CHECK(px[0] == 255 && px[1] == 0 && px[2] == 0);
-    compare_heat(1, px);
-    CHECK(px[0] == 0 && px[1] == 0 && px[2] == 128);
-    /* The command. */
-    b.data[3 * 55 + 2] = 100;
-    ppm_save(p_a, &a, err, sizeof err);
-    ppm_save(p_b, &b, err, sizeof err);
-    ppm_save(p_c, &c, err, sizeof err);
-    argv[0] = "compare";
-    argv[1] = p_a;
-    argv[2] = p_b;
-    argv[3] = "--diff";
-    argv[4] = p_d;
-    argv[5] = "--min-psnr";
-    argv[6] = "43";
-    CHECK_EQ(compare_main(7, argv), 0);
-    CHECK_EQ(ppm_read(p_d, &heat, err, sizeof err), 0);
-    compare_heat(30, px);
-    CHECK(heat.data && memcmp(heat.data + 3 * 55, px, 3) == 0 &&
-          heat.data[0] == 0);
-    ppm_free(&heat);
-    argv[6] = "44";
-    CHECK_EQ(compare_main(7, argv), 1);
-    argv[3] = "--max-bad";
-    argv[4] = "0.5";
-    CHECK_EQ(compare_main(5, argv), 1);
-    argv[4] = "1";
-    CHECK_EQ(compare_main(5, argv), 0);
-    argv[4] = "lots";
-    CHECK_EQ(compare_main(5, argv), 2);
-    CHECK_EQ(compare_main(2, argv), 2);
-    argv[3] = "--bogus";
-    CHECK_EQ(compare_main(4, argv), 2);
-    argv[2] = p_c;
-    CHECK_EQ(compare_main(3, argv), 2);
-    argv[2] = p_missing;
-    CHECK_EQ(compare_main(3, argv), 2);
-    ppm_free(&a);
-    ppm_free(&b);
-    ppm_free(&c);
-}
-
 int main(void)
 {
-    char *const files[] = {p_rt, p_a, p_b, p_c, p_d};
-    size_t i;
     test_sphere();
     test_quad();
     test_box();
@@ -709,20 +543,5 @@ int main(void)
     test_render_shading();
     test_render_glass();
     test_render_texture_bands();
-    if (mkdtemp(tmpdir)) {
-        snprintf(p_rt, sizeof p_rt, "%s/rt.ppm", tmpdir);
-        snprintf(p_missing, sizeof p_missing, "%s/missing.ppm", tmpdir);
-        snprintf(p_a, sizeof p_a, "%s/a.ppm", tmpdir);
-        snprintf(p_b, sizeof p_b, "%s/b.ppm", tmpdir);
-        snprintf(p_c, sizeof p_c, "%s/c.ppm", tmpdir);
-        snprintf(p_d, sizeof p_d, "%s/d.ppm", tmpdir);
-        test_ppm();
-        test_compare();
-        for (i = 0; i < sizeof files / sizeof files[0]; i++)
-            unlink(files[i]);
-        rmdir(tmpdir);
-    } else {
-        CHECK(!"mkdtemp failed");
-    }
     return th_summary();
 }

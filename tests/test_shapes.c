@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "harness.h"
-#include "rt_internal.h"
+#include "rt_shape.h"
 
 #define D2F(x) ((fx_t)lround((x) * 65536.0))
 #define F2D(x) ((double)(x) / 65536.0)
@@ -35,7 +35,7 @@ static rt_ray ray(double ox, double oy, double oz, double dx, double dy,
     r.o = fx_v3(D2F(ox), D2F(oy), D2F(oz));
     r.d = fx_v3(D2F(dx / l), D2F(dy / l), D2F(dz / l));
     r.e = rt_unit_err(r.d);
-    r.small = (uint8_t)rt_small3(r.o);
+    r.small = (uint8_t)fx_v3_small(r.o);
     return r;
 }
 
@@ -264,7 +264,7 @@ static void flat_quads(void)
            "from the general path\n", n, hits, flats[1], flats[2], bad);
 }
 
-/* rt_udiv64_32 against the compiler's 64-bit division. */
+/* fx_udiv64_32 against the compiler's 64-bit division. */
 static void division(void)
 {
     uint64_t x = 88172645463325252ull;
@@ -279,14 +279,14 @@ static void division(void)
         if (i % 7 == 0)
             num = ((uint64_t)d << 32) - 1 - (x & 0xFF);
         n++;
-        bad += rt_udiv64_32(num, d) != (uint32_t)(num / d);
+        bad += fx_udiv64_32(num, d) != (uint32_t)(num / d);
     }
     CHECK_EQ(bad, 0);
-    CHECK_EQ(rt_udiv64_32(0, 1), 0);
-    CHECK_EQ(rt_udiv64_32(((uint64_t)0xFFFFFFFFu << 32) - 1, 0xFFFFFFFFu),
+    CHECK_EQ(fx_udiv64_32(0, 1), 0);
+    CHECK_EQ(fx_udiv64_32(((uint64_t)0xFFFFFFFFu << 32) - 1, 0xFFFFFFFFu),
              0xFFFFFFFFu); /* the largest dividend allowed */
-    CHECK_EQ(rt_udiv64_32(((uint64_t)1 << 32) - 1, 1), 0xFFFFFFFFu);
-    printf("rt_udiv64_32: %ld random divisions, %ld wrong\n", n, bad);
+    CHECK_EQ(fx_udiv64_32(((uint64_t)1 << 32) - 1, 1), 0xFFFFFFFFu);
+    printf("fx_udiv64_32: %ld random divisions, %ld wrong\n", n, bad);
 }
 
 int main(void)

@@ -1,9 +1,10 @@
 /*
  * port.h: the services the bare-metal firmware needs from a board. Each
  * function here must be defined for each board (in board_<name>.c, or in
- * the shared out_semihost.c or out_uart.c for the output channels);
- * mk/firmware.mk picks the files. A new board means one board file, one
- * linker script and a few lines in mk/firmware.mk.
+ * the shared out_semihost.c or out_uart.c for the output channels). Each
+ * board is declared in its own mk/boards/<name>.mk, which names its files,
+ * CPU flags, linker script and QEMU machine. A new board means one board
+ * file, one linker script and one mk/boards/<name>.mk (docs/porting.md).
  */
 #ifndef PORT_H
 #define PORT_H

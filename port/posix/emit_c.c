@@ -284,7 +284,6 @@ int emit_c_scene(FILE *f, const rt_scene *s, const char *source)
     put_uint(&e, "n_materials", s->n_materials);
     put_uint(&e, "n_lights", s->n_lights);
     put_uint(&e, "n_objects", s->n_objects);
-    put(&e, ".features = %#lxu,", (unsigned long)s->features);
 
     put_array(&e, "mat", n_mat, s, put_mat_i);
     put_array(&e, "light", n_light, s, put_light_i);

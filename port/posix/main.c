@@ -482,11 +482,11 @@ static int render_scene(const cli *c, const rt_scene *scene)
     return rc;
 }
 
-/* The RT_NO_* flag of each feature bit, in bit order (rt_scene.h). */
+/* The RT_NO_* flag of each feature bit, in bit order (rt_features.h). */
 static const char *const no_flag[] = {
-    "RT_NO_SHADOWS", "RT_NO_REFLECTION", "RT_NO_REFRACTION", "RT_NO_TEXTURES",
-    "RT_NO_BUMP", "RT_NO_SPECULAR", "RT_NO_MULTILIGHT", "RT_NO_SUPERSAMPLING",
-    "RT_NO_SPHERE", "RT_NO_QUAD", "RT_NO_BOX", "RT_NO_CYLINDER", "RT_NO_CONE"
+#define NO_FLAG(name, text) "RT_NO_" #name,
+    RT_FEATURE_LIST(NO_FLAG)
+#undef NO_FLAG
 };
 
 static int print_build_flags(const cli *c, const rt_scene *scene)

@@ -1,0 +1,50 @@
+/*
+ * fx_trig: the tangent the camera's field of view needs, without libm:
+ * sine and cosine by Taylor series in Q2.30.
+ */
+#include "fx_math.h"
+
+/* Q2.30 helpers: a * b for |a|, |b| < 2, rounded. */
+static int64_t mul30(int64_t a, int64_t b)
+{
+    return (a * b + ((int64_t)1 << 29)) >> 30;
+}
+
+/* sin and cos of x (radians, Q2.30, 0 <= x <= pi/4) by Taylor series to
+ * x^13: the first omitted term is below 2^-40 there. */
+static void sincos30(int64_t x, int64_t *s, int64_t *c)
+{
+    const int64_t one = (int64_t)1 << 30;
+    int64_t x2 = mul30(x, x);
+    int64_t sn = one, cs = one;
+    /* Horner from the highest term: sin = x(1 - x^2/6(1 - x^2/20(...))). */
+    for (int k = 13; k >= 3; k -= 2)
+        sn = one - mul30(x2, sn) / (k * (k - 1));
+    for (int k = 14; k >= 2; k -= 2)
+        cs = one - mul30(x2, cs) / (k * (k - 1));
+    *s = mul30(x, sn);
+    *c = cs;
+}
+
+fx_t fx_tan_half_deg(fx_t deg)
+{
+    /* pi / 360 in Q2.30: half the angle, in radians. */
+    const int64_t half_rad = 9370165; /* round(2^30 * pi / 360) */
+    const int64_t quarter = 843314857; /* round(2^30 * pi / 4) */
+    const int64_t halfpi = 1686629713; /* round(2^30 * pi / 2) */
+    int64_t s, c;
+    if (deg <= 0)
+        return 0;
+    int64_t x = ((int64_t)deg * half_rad + 0x8000) >> 16;
+    if (x > halfpi)
+        x = halfpi;
+    if (x <= quarter) {
+        sincos30(x, &s, &c);
+    } else {
+        sincos30(halfpi - x, &c, &s); /* tan x = cot(pi/2 - x) */
+    }
+    if (c <= 0)
+        return FX_MAX;
+    int64_t q = (s * 65536 + c / 2) / c;
+    return fx_sat64(q);
+}

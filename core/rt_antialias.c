@@ -1,0 +1,187 @@
+/*
+ * rt_antialias: the camera rays of each pixel of a row, and their mean.
+ * A row first learns which objects its rays may hit and in which columns
+ * (rt_cull); each pixel then takes the mean of its n x n grid of samples,
+ * or, with adaptive anti-aliasing, its centre sample unless its
+ * neighbourhood differs.
+ */
+#include "rt_antialias.h"
+#include "rt_pixel.h"
+
+static fx_t clamp01(fx_t v)
+{
+    return v < 0 ? 0 : (v > FX_ONE ? FX_ONE : v);
+}
+
+/* One pixel row's camera rays: what they may hit (rt_cull), and where. */
+typedef struct {
+    rt_row_spans hit;
+    int32_t lo, hi; /* columns outside [lo, hi] can hit nothing */
+    fx_vec3 base[RT_MAX_SPP_SIDE]; /* w + sy up for each sample row */
+} row_spans;
+
+static void row_setup(row_spans *rs, const rt_tracer *tr,
+                      const rt_cam_frame *cf, const rt_options *o, unsigned y)
+{
+    const rt_scene *s = tr->scene;
+    const unsigned n = cf->n;
+    for (unsigned j = 0; j < n; j++) {
+        fx_t sy = rt_cam_offset(cf, rt_cam_row_k(o->height, n, y, j));
+        rs->base[j] = fx_v3_madd(cf->w, cf->up, sy);
+    }
+    if (RT_CULL) {
+        rt_cull_row(s, cf, o->width, o->height, y, &rs->hit);
+    } else {
+        for (unsigned i = 0; i < s->n_objects; i++) {
+            rs->hit.span[i].obj = (uint16_t)i;
+            rs->hit.span[i].x0 = 0;
+            rs->hit.span[i].x1 = INT16_MAX;
+        }
+        rs->hit.count = s->n_objects;
+    }
+    rs->lo = INT32_MAX;
+    rs->hi = -1;
+    for (unsigned k = 0; k < rs->hit.count; k++) {
+        if (rs->hit.span[k].x0 < rs->lo)
+            rs->lo = rs->hit.span[k].x0;
+        if (rs->hit.span[k].x1 > rs->hi)
+            rs->hi = rs->hit.span[k].x1;
+    }
+}
+
+/* The sample at screen offset k (rt_cam_col_k) along the sample row whose
+ * centre direction is base, in pixel column x. Not inlined: the row's
+ * frame (under rt_cull_row) stays small. */
+RT_NOINLINE static rt_rgb sample(const rt_tracer *tr, rt_work *wk,
+                                 const rt_cam_frame *cf, const row_spans *rs,
+                                 fx_vec3 base, int32_t k, unsigned x)
+{
+    rt_ray r;
+    fx_vec3 d = rt_cam_dir(cf, base, rt_cam_offset(cf, k));
+    rt_ray_set(&r, tr->scene->cam.eye, fx_v3_normalize(d));
+    RT_COUNT(wk, primary);
+    return rt_trace_camera(tr, wk, &r, &rs->hit, x);
+}
+
+/* One pixel: the mean of its n x n samples (cf->n), rounded to 8 bits. */
+static void pixel(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
+                  const row_spans *rs, const rt_options *o, unsigned x,
+                  uint8_t rgb8[3])
+{
+    /* Without supersampling n is 1 at compile time: the loops fold away. */
+    const unsigned n = RT_HAS_SUPERSAMPLING ? cf->n : 1, spp = n * n;
+    /* At most 16 samples of at most 2^16 each: 32 bits hold the sum. */
+    uint32_t sum[3] = { 0, 0, 0 };
+    const int covered = (int32_t)x >= rs->lo && (int32_t)x <= rs->hi;
+    if (n == 1) { /* the common case, without the loops and the mean */
+        rt_rgb c = tr->scene->background;
+        if (covered)
+            c = sample(tr, wk, cf, rs, rs->base[0],
+                       rt_cam_col_k(o->width, 1, x, 0), x);
+        else if (RT_STATS && wk->stats)
+            wk->stats->primary++;
+        rgb8[0] = fx_to_u8(c.r); /* it clamps as clamp01 does */
+        rgb8[1] = fx_to_u8(c.g);
+        rgb8[2] = fx_to_u8(c.b);
+        return;
+    }
+    if (!covered) {
+        /* No object can be hit: every sample sees the background, and
+         * needs no ray (rt_trace_camera would return the background). */
+        const rt_rgb bg = tr->scene->background;
+        if (RT_STATS && wk->stats)
+            wk->stats->primary += spp;
+        sum[0] = (uint32_t)clamp01(bg.r) * spp;
+        sum[1] = (uint32_t)clamp01(bg.g) * spp;
+        sum[2] = (uint32_t)clamp01(bg.b) * spp;
+    }
+    for (unsigned j = 0; covered && j < n; j++) {
+        fx_vec3 base = rs->base[j];
+        for (unsigned i = 0; i < n; i++) {
+            rt_rgb c = sample(tr, wk, cf, rs, base,
+                              rt_cam_col_k(o->width, n, x, i), x);
+            sum[0] += (uint32_t)clamp01(c.r);
+            sum[1] += (uint32_t)clamp01(c.g);
+            sum[2] += (uint32_t)clamp01(c.b);
+        }
+    }
+    for (int k = 0; k < 3; k++)
+        rgb8[k] =
+            fx_to_u8((fx_t)(spp <= 1 ? sum[k] : (sum[k] + spp / 2) / spp));
+}
+
+void rt_aa_row(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
+               const rt_options *o, unsigned y, uint8_t *row)
+{
+    row_spans rs;
+    row_setup(&rs, tr, cf, o, y);
+    for (unsigned x = 0; x < o->width; x++) {
+        uint8_t rgb8[3];
+        pixel(tr, wk, cf, &rs, o, x, rgb8);
+        rt_put_pixel(row, o, x, y, rgb8);
+    }
+}
+
+/* Adaptive anti-aliasing: each pixel starts from its centre sample; only a
+ * pixel whose 3x3 neighbourhood of centre samples differs by more than
+ * o->adaptive (in 8-bit levels, any channel) gets the full n x n grid. The
+ * centre samples of rows y-1..y+1 live in the scratch part of row_buf, so a
+ * band computes the rows around it too and any banding gives the same
+ * bytes. */
+rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
+                         const rt_cam_frame *cfn, const rt_options *o, int y0,
+                         int y1, uint8_t *row_buf, rt_row_fn fn, void *ctx)
+{
+    if (!RT_HAS_SUPERSAMPLING) /* rt_render_rows does not call it then */
+        return RT_ERR_UNSUPPORTED;
+    rt_cam_frame cf1_store;
+    const rt_cam_frame *cf1 = &cf1_store;
+    row_spans rs;
+    rt_cam_setup(&cf1_store, tr->scene, o->height, 1);
+    const unsigned w = o->width;
+    uint8_t *slot[3];
+    int slot_y[3] = { -1, -1, -1 };
+    for (int k = 0; k < 3; k++)
+        slot[k] = row_buf + rt_pixel_row_bytes(o) + (size_t)k * 3u * w;
+    for (int y = y0; y < y1; y++) {
+        /* Centre samples of rows y-1, y, y+1 (clamped to the image). */
+        const uint8_t *near[3];
+        for (int d = -1; d <= 1; d++) {
+            int yy =
+                y + d < 0 ? 0 : (y + d >= o->height ? o->height - 1 : y + d);
+            int k = yy % 3;
+            if (slot_y[k] != yy) {
+                row_setup(&rs, tr, cf1, o, (unsigned)yy);
+                for (unsigned x = 0; x < w; x++)
+                    pixel(tr, wk, cf1, &rs, o, x, slot[k] + 3 * x);
+                slot_y[k] = yy;
+            }
+            near[d + 1] = slot[k];
+        }
+        row_setup(&rs, tr, cfn, o, (unsigned)y);
+        for (unsigned x = 0; x < w; x++) {
+            const uint8_t *c = near[1] + 3 * x;
+            unsigned contrast = 0;
+            for (int d = 0; d < 3; d++) {
+                for (int dx = -1; dx <= 1; dx++) {
+                    unsigned xx = (x == 0 && dx < 0)       ? 0
+                                  : (x + 1 == w && dx > 0) ? x
+                                                           : x + (unsigned)dx;
+                    for (int ch = 0; ch < 3; ch++) {
+                        int diff = (int)near[d][3 * xx + ch] - (int)c[ch];
+                        unsigned a = (unsigned)(diff < 0 ? -diff : diff);
+                        if (a > contrast)
+                            contrast = a;
+                    }
+                }
+            }
+            uint8_t rgb8[3] = { c[0], c[1], c[2] };
+            if (contrast > o->adaptive)
+                pixel(tr, wk, cfn, &rs, o, x, rgb8);
+            rt_put_pixel(row_buf, o, x, (unsigned)y, rgb8);
+        }
+        if (fn(ctx, y, row_buf, rt_pixel_row_bytes(o)) != 0)
+            return RT_ERR_ABORTED;
+    }
+    return RT_OK;
+}

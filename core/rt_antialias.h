@@ -1,0 +1,22 @@
+/*
+ * rt_antialias: the samples of each pixel of a row: the n x n grid
+ * (rt_options.spp = n * n), and adaptive anti-aliasing, which gives the
+ * grid only to pixels whose neighbourhood differs. Internal.
+ */
+#ifndef RT_ANTIALIAS_H
+#define RT_ANTIALIAS_H
+
+#include "rt_trace.h"
+
+/* Fills row y (rt_row_bytes(o) bytes) in o->format, each pixel the mean
+ * of its cf->n x cf->n samples. */
+void rt_aa_row(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
+               const rt_options *o, unsigned y, uint8_t *row);
+
+/* Rows y0 <= y < y1 with adaptive anti-aliasing (o->adaptive > 0,
+ * cfn->n > 1), each handed to fn; row_buf holds rt_buffer_bytes(o). */
+rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
+                         const rt_cam_frame *cfn, const rt_options *o, int y0,
+                         int y1, uint8_t *row_buf, rt_row_fn fn, void *ctx);
+
+#endif /* RT_ANTIALIAS_H */

@@ -1,0 +1,41 @@
+/*
+ * rt_cutoff: the faint-ray cut-off (docs/render-model.md). A reflected or
+ * refracted ray whose weight times the bound on its colour is below what
+ * is left of its sample's budget is not traced, and that product is taken
+ * off the budget: all the rays a sample skips add up to less than the
+ * budget per channel. RT_CUTOFF (rt_config.h): builds with secondary rays.
+ */
+#ifndef RT_CUTOFF_H
+#define RT_CUTOFF_H
+
+#include "rt_trace.h"
+
+/* Budget for untraced colour at 1 spp: 2^-9 (Q32.32), under half an 8-bit
+ * level (1/510). rt_tracer_init divides it by the samples per pixel. */
+#define RT_CUT_BUDGET ((uint32_t)1 << 23)
+
+/* Fills bound[k], k = 0..RT_MAX_DEPTH: above every channel of the colour
+ * of a ray with k bounces left in scene s (Q16.16, rounded up). */
+void rt_cutoff_bounds(uint32_t bound[RT_MAX_DEPTH + 1], const rt_scene *s);
+
+/* Weight of a ray spawned with coefficient k by a ray of weight w, rounded
+ * up so that it never understates what the ray can add. */
+static inline fx_t rt_child_weight(fx_t w, fx_t k)
+{
+    return (fx_t)(((int64_t)w * k + 0xFFFF) >> 16);
+}
+
+/* 1 if a ray of weight w at this depth must be traced. If not, its colour
+ * is taken as 0 and its bound w B is taken off the sample's budget. */
+static inline int rt_worth_tracing(const rt_tracer *tr, rt_work *wk, fx_t w,
+                                   unsigned depth)
+{
+    uint64_t cost = (uint64_t)(uint32_t)w * tr->bound[tr->max_depth - depth];
+    if (cost >= wk->budget)
+        return 1;
+    wk->budget -= (uint32_t)cost;
+    RT_COUNT(wk, cut);
+    return 0;
+}
+
+#endif /* RT_CUTOFF_H */

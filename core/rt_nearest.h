@@ -1,0 +1,91 @@
+/*
+ * rt_nearest: the nearest hit along a ray, by whichever search applies:
+ * only the object itself inside sealed glass (rt_sealed.h), the
+ * candidates of a direction grid (rt_dirgrid.h), the camera row's spans
+ * (rt_cull.h), or every object. Objects go in index order in each, so
+ * exact ties resolve alike and the image does not depend on the search.
+ * Static inline: called once per ray, in the shading loop's unit.
+ */
+#ifndef RT_NEAREST_H
+#define RT_NEAREST_H
+
+#include "rt_shape.h"
+#include "rt_trace.h"
+
+/* Tests object i for a nearer hit than *best. */
+static inline void rt_try_nearest(rt_work *wk, const rt_object *objs,
+                                  const rt_ray *r, unsigned i, fx_t *best,
+                                  uint16_t *obj, uint8_t *part)
+{
+    fx_t ti;
+    uint8_t pi;
+    RT_COUNT(wk, tests);
+    if (rt_intersect(&objs[i], r, RT_EPS, *best, &ti, &pi)) {
+        *best = ti;
+        *obj = (uint16_t)i;
+        *part = pi;
+    }
+}
+
+/* Nearest hit among all objects but `skip`, of a ray leaving object
+ * `from` (RT_NO_OBJECT: unknown). Returns 1 and sets *t, *obj and *part
+ * on a hit. */
+static inline int rt_nearest(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
+                             unsigned skip, unsigned from, fx_t *t,
+                             uint16_t *obj, uint8_t *part)
+{
+    const rt_scene *s = tr->scene;
+    const uint32_t *cand;
+    fx_t best = FX_MAX;
+    /* A closed convex object skips itself exactly for rays leaving its
+     * outside, so this ray runs inside `from`. */
+    if (skip == RT_NO_OBJECT && from < s->n_objects &&
+        rt_sealed_alone(&tr->sealed, from)) {
+        rt_try_nearest(wk, s->obj, r, from, &best, obj, part);
+    } else if (rt_dir_from_object(&tr->grids, from, s->n_objects, r->d,
+                                  &cand)) {
+        for (unsigned w = 0; cand && w < tr->grids.words; w++) {
+            for (uint32_t m = cand[w]; m; m &= m - 1) {
+                unsigned i = w * 32 + (unsigned)fx_ctz32(m);
+                if (i != skip)
+                    rt_try_nearest(wk, s->obj, r, i, &best, obj, part);
+            }
+        }
+    } else {
+        for (unsigned i = 0; i < s->n_objects; i++)
+            if (i != skip)
+                rt_try_nearest(wk, s->obj, r, i, &best, obj, part);
+    }
+    *t = best;
+    return best != FX_MAX;
+}
+
+/* Nearest hit of camera ray r in pixel column x among the row's spans. */
+static inline int rt_nearest_camera(const rt_tracer *tr, rt_work *wk,
+                                    const rt_ray *r, const rt_row_spans *rs,
+                                    unsigned x, fx_t *t, uint16_t *obj,
+                                    uint8_t *part)
+{
+    const rt_scene *s = tr->scene;
+    fx_t best = FX_MAX;
+    int found = 0;
+    const rt_span *spans = rs->span;
+    const unsigned n_spans = rs->count;
+    for (unsigned k = 0; k < n_spans; k++) {
+        fx_t ti;
+        uint8_t pi;
+        if (x < (unsigned)spans[k].x0 || x > (unsigned)spans[k].x1)
+            continue;
+        RT_COUNT(wk, tests);
+        if (rt_intersect(&s->obj[spans[k].obj], r, RT_EPS, best, &ti, &pi)) {
+            best = ti;
+            *obj = spans[k].obj;
+            *part = pi;
+            found = 1;
+        }
+    }
+    *t = best;
+    return found;
+}
+
+#endif /* RT_NEAREST_H */

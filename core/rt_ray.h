@@ -1,0 +1,74 @@
+/*
+ * rt_ray: a ray, the distances it is tested with, and where a ray leaving
+ * a surface starts. Internal to the core.
+ */
+#ifndef RT_RAY_H
+#define RT_RAY_H
+
+#include "rt_scene.h"
+
+/* Smallest hit distance and secondary-ray offset: 1/512 (see
+ * docs/render-model.md and docs/numerics.md). */
+#define RT_EPS ((fx_t)128)
+
+/* |d.n| below this (Q32.32) counts as parallel: 2^-16. */
+#define RT_PAR_Q32 ((int64_t)1 << 16)
+
+/* An object index meaning "none" (nothing skipped, no known origin). */
+#define RT_NO_OBJECT 0xFFFFu
+
+typedef struct {
+    fx_vec3 o;     /* origin */
+    fx_vec3 d;     /* unit direction */
+    int32_t e;     /* rt_unit_err(d): |d|^2 - 1 in Q32.32 */
+    uint8_t small; /* fx_v3_small(o): the 32-bit intersection paths apply */
+} rt_ray;
+
+/* |d|^2 - 1 of a unit direction, in Q32.32 (rounding leaves |d| a little
+ * off 1; the bounding-sphere test corrects for it). Each component is
+ * within an ulp, so |e| is far below 2^18. The closest approach is
+ * (oc.d) / |d|^2, not oc.d: without the factor its error is e |oc| (half a
+ * unit for a sphere 30000 units away); with t (1 - e) it is e^2 |oc|. */
+static inline int32_t rt_unit_err(fx_vec3 d)
+{
+    return (int32_t)((int64_t)d.x * d.x + (int64_t)d.y * d.y +
+                     (int64_t)d.z * d.z - ((int64_t)1 << 32));
+}
+
+/* Sets a ray's origin and unit direction, and the two values its tests
+ * derive from them (rt_unit_err, fx_v3_small). */
+static inline void rt_ray_set(rt_ray *r, fx_vec3 o, fx_vec3 d)
+{
+    r->o = o;
+    r->d = d;
+    r->e = rt_unit_err(d);
+    r->small = (uint8_t)fx_v3_small(o);
+}
+
+/* How far along the normal a ray leaving object o starts off its surface:
+ * shading offsets secondary and shadow rays by it, and the direction grids
+ * (rt_dirgrid.c) widen their cones by it, so the two must agree.
+ * Cylinders and cones are solved in a frame whose unit is 2^ushift ulps,
+ * so a ray's root on its own surface is off by about that much over the
+ * cosine of its angle to the surface. Starting it 4 frame units off the
+ * surface (never less than RT_EPS) keeps that root behind it at any angle:
+ * no acne on large open shapes' inner walls. At most 2^17. */
+static inline fx_t rt_origin_offset(const rt_object *o)
+{
+    if ((o->kind == RT_CYLINDER || o->kind == RT_CONE) && o->ushift > 4)
+        return (fx_t)1 << (o->ushift + 2);
+    return RT_EPS;
+}
+
+/* Moves the hit point *p off the surface by off along the unit normal ng
+ * (towards the ray), once: rays leaving on the ray's side start there,
+ * and many hits cast none. |off| <= 2^17. */
+static inline void rt_out_point(fx_vec3 *p, int *done, fx_vec3 ng, fx_t off)
+{
+    if (!*done) {
+        *p = fx_v3_madd_unit(*p, ng, off);
+        *done = 1;
+    }
+}
+
+#endif /* RT_RAY_H */

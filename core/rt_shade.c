@@ -1,0 +1,148 @@
+/*
+ * rt_shade: the Whitted shading loop (docs/render-model.md). A hit's
+ * colour is its ambient term, plus for each point light not in shadow a
+ * Lambert term and a Phong highlight, plus the colours of the reflected
+ * and the refracted ray, traced recursively. Recursion is capped by
+ * RT_MAX_DEPTH at compile time and by the caller's depth. Each effect is
+ * one call away, in the header named for it; each RT_HAS_* condition is a
+ * compile-time constant (rt_config.h).
+ */
+#include "rt_bounce.h"
+#include "rt_colour.h"
+#include "rt_cutoff.h"
+#include "rt_nearest.h"
+#include "rt_shadow.h"
+#include "rt_specular.h"
+#include "rt_texture.h"
+
+static rt_rgb trace(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
+                    unsigned depth, fx_t w, unsigned skip, unsigned from);
+
+/* Colour of the hit (object oi, part, distance t) seen along r. */
+static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
+                    unsigned depth, fx_t w, uint16_t oi, uint8_t part, fx_t t)
+{
+    const rt_scene *s = tr->scene;
+    const rt_object *o = &s->obj[oi];
+    const rt_material *m = &s->mat[o->material];
+    /* d is a unit vector: below 16384 units the cheaper form is exact. */
+    fx_vec3 p = t <= ((fx_t)1 << 30) ? fx_v3_madd_unit(r->o, r->d, t)
+                                     : fx_v3_madd(r->o, r->d, t);
+    const fx_vec3 ng_out = rt_normal(o, p, part);
+    fx_vec3 ng = ng_out;
+    int outside = o->kind == RT_QUAD || fx_v3_dot_q32(r->d, ng) <= 0;
+    if (fx_v3_dot_q32(r->d, ng) > 0)
+        ng = fx_v3_neg(ng); /* face the ray */
+    fx_vec3 n = ng;
+    if (RT_HAS_BUMP && m->bump != 0)
+        n = rt_bump(m, o, p, ng);
+    unsigned tex = 0; /* which colour: m->color, or color2 */
+    /* The texture is read just inside the surface: see render-model.md. */
+    if (RT_HAS_TEXTURES && m->texture != RT_TEX_NONE)
+        tex = rt_texel(m, o, fx_v3_madd_unit(p, ng_out, -RT_EPS));
+    const rt_rgb base = tex ? m->color2 : m->color;
+    /* Where rays leaving on the ray's side start: made on first use. */
+    const fx_t off = rt_origin_offset(o);
+    fx_vec3 p_out = p;
+    int have_out = 0;
+    unsigned skip_out = (o->convex && outside) ? oi : RT_NO_OBJECT;
+
+    rt_rgb c = tr->amb[o->material][tex];
+    const fx_t kdl = tr->kdl[o->material];
+    const unsigned n_lights =
+        RT_HAS_MULTILIGHT ? s->n_lights : (s->n_lights ? 1u : 0u);
+    /* Inside a closed object every light outside it is hidden. */
+    const int dark = !outside && rt_sealed_dark(&tr->sealed, oi);
+    for (unsigned li = 0; !dark && li < n_lights; li++) {
+        const rt_light *l = &s->light[li];
+        fx_vec3 lv = fx_v3_sub(l->pos, p);
+        fx_vec3 ld = fx_v3_normalize(lv);
+        fx_t ndl = fx_v3_dotn(n, ld);
+        if (ndl <= 0)
+            continue;
+        if (RT_HAS_SHADOWS && (tr->feat & RT_FEAT_SHADOWS) &&
+            rt_in_shadow(tr, wk, li, lv, ld, &p_out, &have_out, ng, off,
+                         skip_out))
+            continue;
+        rt_rgb lc =
+            li == 0 ? tr->lit[o->material][tex] : rt_rgb_mul(base, l->color);
+        rt_rgb_madd(&c, lc, fx_mul(kdl, ndl)); /* Lambert */
+        fx_t ks;
+        if (RT_HAS_SPECULAR && m->specular > 0 &&
+            rt_highlight(m, n, ld, ndl, r->d, tr->spec_min[o->material], &ks))
+            rt_rgb_madd(&c, l->color, ks); /* Phong */
+    }
+    if (depth >= tr->max_depth)
+        return c;
+
+    if (RT_HAS_REFLECTION) {
+        fx_t wr = rt_child_weight(w, m->reflect);
+        if (m->reflect > 0 && rt_worth_tracing(tr, wk, wr, depth + 1)) {
+            rt_ray rr;
+            rt_out_point(&p_out, &have_out, ng, off);
+            rt_ray_set(&rr, p_out, rt_reflect_dir(r->d, n));
+            RT_COUNT(wk, reflection);
+            rt_rgb_madd(&c, trace(tr, wk, &rr, depth + 1, wr, skip_out, oi),
+                        m->reflect);
+        }
+    }
+    if (RT_HAS_REFRACTION) {
+        fx_t wt = rt_child_weight(w, m->transparency);
+        if (m->transparency > 0 && rt_worth_tracing(tr, wk, wt, depth + 1)) {
+            fx_t eta = outside ? m->ior_inv : m->ior;
+            fx_vec3 td;
+            rt_ray tr2;
+            if (!rt_refract_dir(r->d, n, eta, &td)) {
+                /* total internal reflection */
+                rt_out_point(&p_out, &have_out, ng, off);
+                rt_ray_set(&tr2, p_out, rt_reflect_dir(r->d, n));
+                RT_COUNT(wk, reflection);
+                rt_rgb_madd(&c,
+                            trace(tr, wk, &tr2, depth + 1, wt, skip_out, oi),
+                            m->transparency);
+            } else {
+                unsigned skip_in =
+                    (o->convex && (!outside || o->kind == RT_QUAD))
+                        ? oi
+                        : RT_NO_OBJECT;
+                rt_ray_set(&tr2, fx_v3_madd_unit(p, ng, -off), td);
+                RT_COUNT(wk, refraction);
+                rt_rgb_madd(&c,
+                            trace(tr, wk, &tr2, depth + 1, wt, skip_in, oi),
+                            m->transparency);
+            }
+        }
+    }
+    return c;
+}
+
+/* rt_trace, which the compiler may fold into shade()'s recursion. */
+static rt_rgb trace(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
+                    unsigned depth, fx_t w, unsigned skip, unsigned from)
+{
+    fx_t t;
+    uint16_t oi = 0;
+    uint8_t part = 0;
+    if (!rt_nearest(tr, wk, r, skip, from, &t, &oi, &part))
+        return tr->scene->background;
+    return shade(tr, wk, r, depth, w, oi, part, t);
+}
+
+rt_rgb rt_trace(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
+                unsigned depth, fx_t w, unsigned skip, unsigned from)
+{
+    return trace(tr, wk, r, depth, w, skip, from);
+}
+
+rt_rgb rt_trace_camera(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
+                       const rt_row_spans *rs, unsigned x)
+{
+    fx_t t;
+    uint16_t oi = 0;
+    uint8_t part = 0;
+    if (RT_CUTOFF)
+        wk->budget = tr->cut_budget; /* a new sample */
+    if (!rt_nearest_camera(tr, wk, r, rs, x, &t, &oi, &part))
+        return tr->scene->background;
+    return shade(tr, wk, r, 0, FX_ONE, oi, part, t);
+}

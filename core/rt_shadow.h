@@ -1,0 +1,98 @@
+/*
+ * rt_shadow: hard shadows. A shadow ray stops at the first blocker; the
+ * light's last blocker (the blocker cache in rt_work) is tried first, as
+ * neighbouring shadow rays tend to share it. The answer does not depend
+ * on the order, only the count of tests does. A light's direction grid
+ * (rt_dirgrid.h) narrows the candidates. Static inline: the shading
+ * loop's unit.
+ */
+#ifndef RT_SHADOW_H
+#define RT_SHADOW_H
+
+#include "rt_shape.h"
+#include "rt_trace.h"
+
+/* 1 if the bit set cand (NULL: empty) lists an object other than skip:
+ * a shadow ray from a floor point often has only the floor to test. */
+static inline int rt_listed_besides(const uint32_t *cand, unsigned words,
+                                    unsigned skip)
+{
+    for (unsigned w = 0; cand && w < words; w++) {
+        uint32_t m = cand[w];
+        if (skip / 32 == w)
+            m &= ~((uint32_t)1 << (skip % 32));
+        if (m)
+            return 1;
+    }
+    return 0;
+}
+
+/* Tests object i for a blocker of shadow ray r; remembers it. */
+static inline int rt_blocks(rt_work *wk, const rt_object *objs,
+                            const rt_ray *r, fx_t tmax, unsigned i,
+                            unsigned light)
+{
+    fx_t ti;
+    uint8_t pi;
+    RT_COUNT(wk, tests);
+    if (!rt_intersect(&objs[i], r, RT_EPS, tmax, &ti, &pi))
+        return 0;
+    wk->blocker[light] = (uint16_t)i;
+    return 1;
+}
+
+/* Any blocker with RT_EPS < t < tmax among the candidates (a bit set of
+ * object indices, or NULL for all objects) but skip. */
+static inline int rt_occluded(const rt_tracer *tr, rt_work *wk,
+                              const rt_ray *r, fx_t tmax, unsigned skip,
+                              unsigned light, const uint32_t *cand)
+{
+    const rt_scene *s = tr->scene;
+    unsigned first = wk->blocker[light];
+    if (first < s->n_objects && first != skip &&
+        (!cand || ((cand[first / 32] >> (first % 32)) & 1u)) &&
+        rt_blocks(wk, s->obj, r, tmax, first, light))
+        return 1;
+    if (RT_DIR_GRIDS && cand) {
+        for (unsigned w = 0; w < tr->grids.words; w++)
+            for (uint32_t m = cand[w]; m; m &= m - 1) {
+                unsigned i = w * 32 + (unsigned)fx_ctz32(m);
+                if (i != skip && i != first &&
+                    rt_blocks(wk, s->obj, r, tmax, i, light))
+                    return 1;
+            }
+        return 0;
+    }
+    for (unsigned i = 0; i < s->n_objects; i++)
+        if (i != skip && i != first &&
+            rt_blocks(wk, s->obj, r, tmax, i, light))
+            return 1;
+    return 0;
+}
+
+/* 1 if light li is hidden from the hit point: a shadow ray from *p_out
+ * (made on first use, rt_out_point) along unit ld, to the light at lv
+ * from the hit, ignoring object skip. */
+static inline int rt_in_shadow(const rt_tracer *tr, rt_work *wk, unsigned li,
+                               fx_vec3 lv, fx_vec3 ld, fx_vec3 *p_out,
+                               int *have_out, fx_vec3 ng, fx_t off,
+                               unsigned skip)
+{
+    const uint32_t *cand = 0; /* every object */
+    int any = 1;
+    if (rt_dir_to_light(&tr->grids, li, ld, &cand))
+        any = rt_listed_besides(cand, tr->grids.words, skip);
+    RT_COUNT(wk, shadow);
+    if (!any)
+        return 0;
+    rt_ray sr;
+    rt_out_point(p_out, have_out, ng, off);
+    rt_ray_set(&sr, *p_out, ld);
+    /* |lv| = lv . norm(lv): a bounded dot product instead of a second
+     * square root; its error (~1e-5 |lv|) only moves the far end of the
+     * shadow ray, by far less than RT_EPS. */
+    return rt_occluded(tr, wk, &sr, fx_sub(fx_v3_dotn(lv, ld), RT_EPS), skip,
+                       li, cand);
+}
+
+#endif /* RT_SHADOW_H */
