@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # fixtrace: a Q16.16 ray tracer for microcontrollers without an FPU.
 #
 #   make            build the host renderer (build/posix/fixtrace)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # An example toolchain file for GCC's arm-none-eabi (Debian:
 # gcc-arm-none-eabi), bare metal:
 #

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fx_math: Q16.16 division and reciprocal (the inline ops live in the
  * header).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fx_math: Q16.16 fixed-point scalar arithmetic.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fx_sqrt: integer and Q16.16 square roots, exact or correctly rounded.
  *

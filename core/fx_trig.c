@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fx_trig: the tangent the camera's field of view needs, without libm:
  * sine and cosine by Taylor series in Q2.30.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fx_vec: the vector operations too large to inline. */
 #include "fx_vec.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fx_vec: 3-vectors of Q16.16 values. Small helpers return structs by value.
  * Component-wise operations follow the fx_math policy of their scalar op.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_antialias: the camera rays of each pixel of a row, and their mean.
  * A row first learns which objects its rays may hit and in which columns

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_antialias: the samples of each pixel of a row: the n x n grid
  * (rt_options.spp = n * n), and adaptive anti-aliasing, which gives the

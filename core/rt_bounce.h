@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_bounce: the directions of secondary rays: the mirror direction and
  * Snell's law, with total internal reflection. Internal.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* rt_camera: the camera frame of a render (rt_camera.h). */
 #include "rt_camera.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_camera: the camera frame and where each sample of a pixel looks.
  * rt_render's samples and rt_cull's row planes both use these, so the

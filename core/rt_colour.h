@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* rt_colour: linear RGB arithmetic of the shading loop. Internal. */
 #ifndef RT_COLOUR_H
 #define RT_COLOUR_H

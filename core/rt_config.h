@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fixtrace configuration: every build-time option and capacity limit, each
  * with its default. Override any of them in the configuration file (below)

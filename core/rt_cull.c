@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_cull: conservative screen-space culling of camera rays.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* rt_cull: which objects a row of camera rays can hit. Internal. */
 #ifndef RT_CULL_H
 #define RT_CULL_H

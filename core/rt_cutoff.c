@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_cutoff: the colour bounds the faint-ray cut-off weighs rays with
  * (rt_cutoff.h), derived once per render from the scene's coefficients.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_cutoff: the faint-ray cut-off (docs/render-model.md). A reflected or
  * refracted ray whose weight times the bound on its colour is below what

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_dirgrid: conservative culling of rays by direction (a light buffer,
  * after Haines and Greenberg, also used for rays leaving an object).

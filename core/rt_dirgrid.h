@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* rt_dirgrid: which objects a ray leaving a known place can hit. Internal. */
 #ifndef RT_DIRGRID_H
 #define RT_DIRGRID_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_features: what a scene needs and what this build can render, as
  * RT_FEAT_* sets over the one list in rt_features.h.

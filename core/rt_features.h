@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_features: the one list of the effects and shapes a build can remove.
  * Each entry gives its NAME (RT_FEAT_<NAME> is its bit in a feature set,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_grey: the grey mapping of 4-bit displays (rt_grey.h).
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_grey: RGB888 pixels to 16 grey levels, for 4-bit displays such as the
  * SSD0323 OLED of the LM3S6965 board (port/baremetal/oled_ssd0323.c). The

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_intersect: ray-shape intersection and surface normals.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_lex: scene text into lines, tokens and Q16.16 numbers, and the error
  * message of the first problem (rt_lex.h). The number reader is public

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_lex: the reading layer of the scene parser, shared by its files and
  * by nothing else. rt_lex.c turns text into lines, tokens and numbers and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_lex_field: a statement's values and field names (rt_lex.h), read
  * with rt_lex.c's tokens. Each reader checks its value's range and, on a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The only C library functions the core uses. Declared here rather than
  * taken from <string.h> because bare-metal toolchains without newlib have

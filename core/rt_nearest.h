@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_nearest: the nearest hit along a ray, by whichever search applies:
  * only the object itself inside sealed glass (rt_sealed.h), the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_parse: the scene text format (docs/scene-format.md) into an rt_scene.
  *

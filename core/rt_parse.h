@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_parse: the text scene format (docs/scene-format.md) into an rt_scene.
  * No allocation: the caller provides the scene; names live on the parser's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_parse_obj: the 'material' statement and the five object statements
  * (rt_lex.h), which refer to materials by name. The names live in a table

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_pixel: the output formats (RGB888, RGB565 in either byte order) and
  * the 4x4 ordered dither RGB565 rows may get. Static inline: it runs once

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_ray: a ray, the distances it is tested with, and where a ray leaving
  * a surface starts. Internal to the core.

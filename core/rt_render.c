@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_render: the scanline boundary (rt_render.h). It checks the scene and
  * the options, sets up the tracer, and hands over one row at a time. Each

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_render: the core's one boundary to a platform. The caller owns the
  * scene, a row buffer of rt_row_bytes() bytes and a callback; the renderer

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* rt_scene: scene defaults and the per-object constants the tracer uses. */
 #include "rt_libc.h"
 #include "rt_scene.h"

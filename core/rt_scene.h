@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_scene: the scene description the renderer reads. The caller owns the
  * storage (fixed-capacity arrays sized in rt_config.h); the parser fills it

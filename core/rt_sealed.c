@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_sealed: which closed glass objects nothing else reaches into
  * (rt_sealed.h), decided once per render from bounding spheres.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_sealed: closed glass that nothing else reaches into (an
  * optimisation; RT_SEALED in rt_config.h). A ray inside such an object

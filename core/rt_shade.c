@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_shade: the Whitted shading loop (docs/render-model.md). A hit's
  * colour is its ambient term, plus for each point light not in shadow a

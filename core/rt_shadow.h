@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_shadow: hard shadows. A shadow ray stops at the first blocker; the
  * light's last blocker (the blocker cache in rt_work) is tried first, as

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* rt_shape: ray-shape intersection and surface normals. Internal. */
 #ifndef RT_SHAPE_H
 #define RT_SHAPE_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* rt_specular: the Phong highlight of a point light. Internal. */
 #ifndef RT_SPECULAR_H
 #define RT_SPECULAR_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* rt_texture: procedural textures and bump noise, owned by materials. */
 #include "rt_texture.h"
 

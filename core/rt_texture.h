@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* rt_texture: solid textures and bump maps. Internal. */
 #ifndef RT_TEXTURE_H
 #define RT_TEXTURE_H

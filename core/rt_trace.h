@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_trace: one ray's colour. The tracer (rt_tracer) is what a render
  * derives from the scene once and only reads while it traces; the work

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_tracer: what a render derives from the scene before the first ray
  * (rt_trace.h): colour tables per material, the highlight cut-offs, the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # What accuracy costs (docs/accuracy.md):
 #
 #   make accuracy        every measurement and the report: docs/accuracy.md

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Benchmarks (docs/effects.md):
 #
 #   make minimal BOARD=an385 [WIDTH=w HEIGHT=h]

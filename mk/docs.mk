@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Documentation: the gallery of every scene in scenes/, rendered by
 # fixtrace itself into docs/img/ (shown in README.md).
 #

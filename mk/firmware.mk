@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Bare-metal firmware (port/baremetal/README.md):
 #
 #   make firmware BOARD=b [SCENE=scenes/x.scene WIDTH=w HEIGHT=h SPP=n]

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Fuzzing the scene parser and the renderers behind it (tests/fuzz/):
 #
 #   make fuzz [FUZZ_SECONDS=60 FUZZ_JOBS=1]   fuzz, then print the totals

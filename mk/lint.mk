@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Static analysis (docs/static-analysis.md says what is checked and why):
 #
 #   make lint [LINT_JOBS=n]    cppcheck and clang-tidy on core/, port/posix/

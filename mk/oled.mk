@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The LM3S6965 board's OLED (BOARD=lm3s6965, port/baremetal/README.md):
 #
 #   make grey4                   build/posix/grey4, the host's picture of

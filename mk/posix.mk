@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Host build: the core, the POSIX port and the double reference renderer.
 
 ifeq ($(SANITIZE),1)

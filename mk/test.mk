@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Tests: every tests/test_*.c is its own binary (one topic each); the
 # harness and all non-CLI host code link in. tests/run.sh runs them and the
 # script-level suites, and prints the final "N passed, N failed" line.

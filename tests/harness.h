@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * A small test harness: checks count instead of aborting, print
  * "file:line: expression" on failure, and th_summary() prints the one line

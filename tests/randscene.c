@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * randscene: writes one random scene, in the scene language, to stdout.
  *

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Runs every test part and adds up their "N passed, N failed[, N skipped]"
 # lines (TEST_SUITES picks suites; see below). Parts: each unit-test binary build/<host>/tests/test_*, then each
 # tests/suite_*.sh script. A part that exits non-zero or prints no summary

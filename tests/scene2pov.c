@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * scene2pov: translates a fixtrace scene into POV-Ray 3.7 scene language,
  * so that POV-Ray can check the double reference from outside.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # suite_accuracy: the quick form of `make accuracy` (docs/accuracy.md), so
 # that the accuracy settings cannot rot. For each setting (RT_ACCURACY 0
 # fast, 1 default, 2 precise) it builds the host renderer, renders the

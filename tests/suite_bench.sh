@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The quick form of `make bench` (tools/bench.sh --quick), so the benchmark
 # cannot rot: it must run and report every scene's instructions per pixel
 # on the Cortex-M3, and each must stay under its ceiling in

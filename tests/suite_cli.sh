@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The host command as a user meets it: every bad argument and bad scene gets
 # a clear message and the right exit status, a failed or interrupted render
 # leaves an existing output untouched and no temporary file behind, and

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The CMake package (CMakeLists.txt, cmake/): tests/cmake_consumer, a tiny
 # project, is configured, built and run on the host with the core taken by
 # add_subdirectory, by FetchContent and by find_package after

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The configuration header and the capacity check (core/rt_config.h,
 # core/rt_scene.h, docs/embedding.md "Configuration"):
 # - an application compiled with other capacities than the core does not

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Culling of camera rays (core/rt_cull.c) and of shadow and secondary
 # rays (the direction grids, core/rt_dirgrid.c) must never change a pixel:
 # random scenes with tiny, huge, near and far objects, reflective and

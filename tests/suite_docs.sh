@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The documentation keeps its promises:
 # - every docs/examples/*.c compiles freestanding against core/ with the
 #   tree's strict warnings (and for Cortex-M0 when arm-none-eabi-gcc is

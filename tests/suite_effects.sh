@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Simulate only what a scene calls for (docs/effects.md):
 # - with --stats, a scene without an effect casts no rays of that kind;
 # - for every scene, the host renderer built with the RT_NO_* flags that

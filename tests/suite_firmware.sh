@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The firmware on every QEMU board (an385, m0, microbit, an505, rv32), in
 # both scene modes (mk/firmware.mk): rendering on the device gives the same
 # bytes as the host, for the seed scene as tables (PRUNE=1, the default: no

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The scene fuzzer as a test (tests/fuzz/README.md): build it (libFuzzer,
 # ASan, UBSan), run every seed, example scene and saved regression input
 # once (one check each), then fuzz briefly from them (one check: no crash).

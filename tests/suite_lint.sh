@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Static analysis as a test: `make lint` (mk/lint.mk, docs/static-analysis.md)
 # runs cppcheck and clang-tidy over core/ and the ports; each clean run is a
 # pass, each run with a finding a failure. Skipped when a tool is missing.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The LM3S6965 board's OLED, checked from the screen: for the seed scene
 # and one more, the firmware (BOARD=lm3s6965) renders at the panel's
 # 128x64 under QEMU, headless; tools/qemu_screen.py (make qemu) waits for

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The PNG writer (port/posix/png.c) against real decoders: every PNG that
 # fixtrace writes must decode to exactly the bytes of the PPM it writes for
 # the same render. Two independent decoders:

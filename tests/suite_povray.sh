@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The double reference checked from outside: POV-Ray 3.7 renders scenes of
 # ours, translated by tests/scene2pov.c (which reads them with the core's
 # own parser and states the mapping of the two models), and each image is

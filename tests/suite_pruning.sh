@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Firmware built for what the scene needs (docs/effects.md), on the M3
 # (an385) at 48x36:
 # - `make firmware` derives the RT_NO_* flags from the scene itself: the

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # core/ is freestanding: it must build with -ffreestanding -nostdlib and no
 # floating-point registers, contain no float/double/malloc/stdio, and its
 # objects may reference no symbol beyond memcpy, memset and memmove (plus

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Every scene, rendered by the fixed-point core and by the double
 # reference at 320x240, 1 spp, is close to the reference
 # (tests/reference_floors.txt); the seed scene meets the accuracy target:

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The firmware's UART output (OUTPUT=uart: port/baremetal/out_uart.c) and
 # its receiver (`fixtrace receive`, port/posix/receive.c):
 # - on an385 (CMSDK UART), microbit (nRF51 UART) and rv32 (16550), the

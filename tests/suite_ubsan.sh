@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The numerical-stability suite and the shape tests under UndefinedBehavior
 # and Address sanitizers with recovery off, as part of every `make test`
 # (make SANITIZE=1 test runs everything that way): signed overflow, shifts

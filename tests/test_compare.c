@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Tests of the image comparison (port/posix/compare.c): PSNR, pixel
  * counts over thresholds, the heat map and `fixtrace compare` itself.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * What the tracer skips.
  * The ray cut-off (rt_options.trace_all = 0) must stay below its budget:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_deflate: the zlib encoder and decoder of port/posix (deflate.c,
  * inflate.c) and the PNG reader built on them. Every input round-trips

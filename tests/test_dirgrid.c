@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The direction grids (core/rt_dirgrid.c) must be conservative: any object
  * a shadow ray or a ray leaving an object hits must be listed in the ray's

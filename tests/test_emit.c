@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Round trip of `fixtrace --emit-c` (port/posix/emit_c.c): every scene in
  * scenes/ (and every parseable scene of the fuzz corpus, when present) is

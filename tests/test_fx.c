@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_fx: the scalar Q16.16 operations against exact integer truth
  * (__int128 rationals) and long double, at the edges and on at least

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_grey: the 4-bit grey mapping of rt_grey.h. The ends map to 0 and
  * 15, levels never decrease with luma, every luma keeps its mean over a

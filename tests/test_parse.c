@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Tests for rt_parse: the number reader against exact rational rounding,
  * every statement of the scene format, every error with its position, the

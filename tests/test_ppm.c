@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Tests of the host's PPM reader and writer (port/posix/ppm.c): headers,
  * comments, maxvals and truncated or malformed files.

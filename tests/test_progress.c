@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_progress: the time left shown by the progress bar (progress.c), on
  * a simulated render whose top quarter is cheap sky and whose rest costs

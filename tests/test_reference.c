@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Tests of the host reference tools: the double renderer's intersections
  * (hand-computed hits, misses, hits from inside, tangents and hits behind

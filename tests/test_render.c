@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * End-to-end renders of every scene in scenes/ at a small size:
  * - the bytes match a stored checksum (tests/render_checksums.txt), which

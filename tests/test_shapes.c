@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Each primitive's intersection and normal in the fixed-point core against
  * closed-form double answers: hit, miss, from inside, tangent, behind the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The numerical-stability suite: a table of named hard cases, each a tiny
  * scene or a direct call into the core, with its expected behaviour in the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_render_rows on scenes built in C with out-of-range indices and
  * values: it must answer RT_ERR_ARG without reading through a bad index

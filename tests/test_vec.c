@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_vec: the fx_vec3 operations against exact integer truth (__int128)
  * and long double, at +-max, for tiny (a few ulp), normal and huge

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # accuracy.sh: what accuracy costs. Measures every row of the table in
 # docs/accuracy.md and writes docs/accuracy.md and docs/accuracy.svg again
 # (`make accuracy` runs it). Needs gcc, make, awk, arm-none-eabi-gcc and

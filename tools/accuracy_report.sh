@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # accuracy_report.sh: writes docs/accuracy.md and docs/accuracy.svg from the
 # measurements tools/accuracy.sh collected (build/accuracy/results.tsv).
 #   tools/accuracy_report.sh RESULTS.tsv M4F_SAME WIDTH HEIGHT RUNS SECONDS

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Prints the adaptive anti-aliasing table of docs/effects.md: the seed
 # scene's primary rays (fixtrace --stats) and PSNR against the reference at
 # 16 spp (fixtrace compare), at 640x480 and 320x240. With --rays, only the

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # make bench: what fixtrace costs, written to docs/bench.md (or, with
 # --quick, a small form to build/bench/quick.md for the test suite).
 # Instruction counts come from QEMU with -icount shift=7 and are exact and

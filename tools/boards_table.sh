@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Prints the seed scene's figures on every board at 320x240, 1 spp, in both
 # firmware modes (tables: PRUNE=1, the default; text: PRUNE=0), as the
 # markdown table of port/baremetal/README.md. Instruction counts are exact

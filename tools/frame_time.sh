@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Turns the measured instructions per pixel (the seed scene at 320x240,
 # 1 spp, firmware built for the scene: the "tables" rows of the table in
 # port/baremetal/README.md, written by tools/boards_table.sh) into

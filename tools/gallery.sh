@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Renders every scene in scenes/ to a PNG with fixtrace itself, for the
 # README's gallery:
 #

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Writes scenes/many.scene: a floor and a 12 x 10 grid of small shapes
 (120 objects with the floor, against RT_MAX_OBJECTS = 128), for timing and
 for scenes with many objects. The output is deterministic (its own LCG, no

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * grey4: what a 4-bit grey panel shows for an RGB888 image, as the host
  * sees it. Reads a P6 PPM (for example `fixtrace -W 128 -H 64` output),

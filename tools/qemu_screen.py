@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Runs QEMU for a board with a display and saves its screen.
 
     qemu_screen.py SCREEN.ppm -- QEMU-COMMAND...

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The randomized differential test: renders random scenes (tests/randscene.c)
 # with the fixed-point core and with the double reference and checks each.
 #

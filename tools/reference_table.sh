@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Prints the README's accuracy table: every scene at 320x240, 1 spp, the
 # fixed-point core against the double reference (fixtrace compare).
 set -eu

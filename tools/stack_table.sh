@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # make stack: the painted stack high-water mark of the firmware, measured
 # under QEMU, written to docs/stack.md, and quoted from there into the
 # docs (tests/suite_docs.sh checks every quote against the file):

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fxbench: instructions per call of the fx_math / fx_vec operations on a
  * Cortex-M, counted by QEMU with -icount shift=7 (see run.sh). Each op runs

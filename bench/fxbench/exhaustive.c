@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * exhaustive: host-only checks too slow for the test suite (about 2 min).
  * It includes the core sources to reach their static helpers.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # fxbench: instructions per call of the fx_math / fx_vec operations and of
 # each intersection routine (rt_intersect per shape kind), on
 # Cortex-M3 and Cortex-M0 code, run on QEMU's mps2-an385 with

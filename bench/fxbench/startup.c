@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* fxbench startup: vector table, .data/.bss set-up, semihosting exit. */
 #include <stdint.h>
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * minimal.c: a renderer written for exactly scenes/diffuse.scene, as a
  * yardstick for what the general renderer's structure costs

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * libm.c: the few libm functions port/posix/ref_render.c calls, for its
  * bench-only bare-metal build (bench/softref). There is no newlib for

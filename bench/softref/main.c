@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * softref: the double-precision reference renderer (port/posix/ref_render.c,
  * unchanged) as bare-metal firmware, to measure what a floating-point

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Renders a scene to a 160x128 SPI display, one RGB565 row at a time. */
 #include "rt_parse.h"
 #include "rt_render.h"

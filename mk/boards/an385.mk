@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # QEMU mps2-an385: a Cortex-M3 (port/baremetal/board_an385.c).
 FW_PREFIX := $(ARM_PREFIX)
 FW_CPU := -mcpu=cortex-m3 -mthumb

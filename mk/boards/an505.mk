@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # QEMU mps2-an505: a Cortex-M33. Soft-float ABI: the core has no floating
 # point, and nothing may touch the FPU (it stays disabled in CPACR).
 FW_PREFIX := $(ARM_PREFIX)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Stellaris LM3S6965 EVB (QEMU lm3s6965evb): a Cortex-M3 with 256 KB of
 # flash, 64 KB of RAM and a 128x64 4-bit OLED (SSD0323 on SSI0). Every row
 # also goes to the panel (port/baremetal/board_lm3s6965.c, oled_ssd0323.c).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # BBC micro:bit (nRF51822, Cortex-M0, 16 KB of RAM for everything): small
 # capacities keep rt_scene small, the row buffer holds 320 pixels, and -Os
 # keeps the stack frames small (flash is no constraint). RT_MAX_WIDTH stays

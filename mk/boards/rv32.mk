@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # QEMU's RISC-V virt machine as an RV32IMAC microcontroller.
 FW_PREFIX := $(RISCV_PREFIX)
 FW_CPU := -march=rv32imac -misa-spec=2.2 -mabi=ilp32 -mcmodel=medany

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * board_an385.c: QEMU mps2-an385 (Cortex-M3), also used by the m0 build
  * (Cortex-M0 code on the same machine).

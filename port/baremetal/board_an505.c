@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * board_an505.c: QEMU mps2-an505 (Cortex-M33, running Secure).
  *

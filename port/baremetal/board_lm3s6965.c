@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * board_lm3s6965.c: the Stellaris LM3S6965 EVB (QEMU lm3s6965evb), a
  * Cortex-M3 with 256 KB of flash, 64 KB of RAM and a 128x64 OLED with 16

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * board_microbit.c: QEMU microbit (nRF51822, Cortex-M0, 16 KB RAM).
  *

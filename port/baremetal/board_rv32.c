@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * board_rv32.c: QEMU riscv32 virt (rv32imac, machine mode).
  *

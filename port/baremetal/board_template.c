@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * board_template.c: the starting point for a new board (docs/porting.md).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * bringup.c: a stand-in for main.c when bringing up a board (build with
  * `make firmware BOARD=<b> FW_APP=bringup`). It needs nothing from the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * common.c: board-independent helpers: the stack high-water mark and
  * number output for the text channel.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * libc.c: the four memory functions GCC may call on its own (struct copies
  * and clears), even with -ffreestanding. There is no C library on the

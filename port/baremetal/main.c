@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * main.c: the fixtrace firmware. It renders the scene one scanline at a
  * time and streams the image through port_write(): a binary PPM (P6) over

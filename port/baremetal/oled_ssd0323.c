@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * oled_ssd0323.c: the SSD0323 OLED of the LM3S6965 EVB over SSI0
  * (oled_ssd0323.h).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * oled_ssd0323.h: the SSD0323 OLED controller of the LM3S6965 EVB (128x64
  * pixels, 16 grey levels, two pixels per byte) on SSI0, with its

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * out_semihost.c: the output channels over semihosting (OUTPUT=semihost,
  * the default; semihost.c has the traps). The image is a binary PPM on

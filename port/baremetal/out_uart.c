@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * out_uart.c: the output channels over the board's UART (OUTPUT=uart in
  * mk/firmware.mk), for a board on a desk: one serial line carries the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port.h: the services the bare-metal firmware needs from a board. Each
  * function here must be defined for each board (in board_<name>.c, or in

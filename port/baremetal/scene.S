@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * scene.S: the scene text, embedded byte for byte in the image's read-only
  * data. FW_SCENE_FILE (an absolute path, from the generated fw_config.h)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * semihost.c: the semihosting traps, shared by every board (ARM: bkpt 0xAB;
  * RISC-V: the slli/ebreak/srai sequence): the host's stdout and stderr,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * startup_cortexm.c: vector table and reset handler for every Cortex-M
  * board (M0, M3, M33). The reset handler copies .data from flash, zeroes

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * startup_rv32.c: reset and trap entry for the RV32 board (QEMU virt,
  * machine mode, started with -bios none at the image's first byte). The

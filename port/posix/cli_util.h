@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* cli_util: argument checking, scene reading and error printing for the
  * host command. */
 #ifndef CLI_UTIL_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* compare: image difference metrics, heat maps and `fixtrace compare`. */
 #include <math.h>
 #include <stdlib.h>

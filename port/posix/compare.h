@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * compare: how far one RGB888 image is from another (the fixed-point render
  * from the reference, say), as numbers and as a heat-map image; and the

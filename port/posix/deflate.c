@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* deflate: the encoder. LZ77 turns the input into literals and
  * (length, distance) pairs; each run of up to BLOCK_TOKENS of them becomes
  * one dynamic Huffman block whose codes are built from that block's own

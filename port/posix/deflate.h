@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* deflate: a zlib stream encoder (RFC 1950 around RFC 1951) of our own,
  * for PNG output: LZ77 over a 32 KB window with hash chains and one step
  * of lazy matching, then dynamic Huffman blocks. And its inverse, a small

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * emit_c: a parsed scene as C source (`fixtrace --emit-c`). Firmware built
  * for one scene carries this constant instead of the scene text, so it

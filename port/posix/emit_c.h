@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* emit_c: a parsed scene as C source, so firmware can carry the scene as
  * constant data instead of the text and the parser. */
 #ifndef EMIT_C_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* image_out: an output image that reaches its final name only when
  * complete. The temporary file is created at open, beside the target, so a
  * missing or read-only directory is reported before any rendering. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* inflate: the decoder of deflate.h. Codes are decoded canonically, one
  * bit at a time against the count of codes of each length, which is slow
  * next to table lookups but short and easy to check; it reads our own PNG

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fixtrace: the host command. Renders a scene file to PPM (or PNG), with
  * the fixed-point core or the double reference; `fixtrace compare` compares

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* png: a small PNG encoder (RGB, 8 bits, a filter chosen per row, our own
  * deflate) and decoder (8-bit RGB or grey, any filters, not interlaced),
  * so the host tool writes and reads pictures browsers show without any

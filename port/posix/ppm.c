@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* ppm: binary PPM (P6, maxval 255) reading and writing. */
 #include <errno.h>
 #include <fcntl.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ppm: binary PPM (P6, maxval 255) images on the host. The reader takes
  * any header the format allows (comments, any whitespace between fields)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* progress: the time left in a render (progress.h). */
 #include <stdlib.h>
 #include <string.h>

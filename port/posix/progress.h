@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* progress: the time left in a render, for the progress bar. Rows differ
  * in cost (sky is cheap, glass is not), so the rows done so far say
  * little about the rest by their number alone. A quick probe renders the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * receive: `fixtrace receive`, the host end of the firmware's UART output
  * (port/baremetal/out_uart.c, which documents the frame). It reads the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ref_internal: what the reference renderer's files share and nobody else
  * needs: the double vector helpers, the Q16.16 to double conversions and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ref_render: docs/render-model.md in plain double. Read it beside the
  * spec: each section below follows one section there, and the formulas are

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ref_render: the double-precision reference renderer. It implements
  * docs/render-model.md with textbook formulas in plain double and libm, so

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ref_shapes: the reference renderer's shapes in plain double (the
  * "Shapes" section of docs/render-model.md): the set-up from rt_object's

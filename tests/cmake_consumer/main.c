@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The consumer of tests/cmake_consumer: renders tiny.scene as a PPM, on
  * the host to stdout, on bare metal through fixtrace's port (semihosting
  * stdout). Uses only the installed header names. */

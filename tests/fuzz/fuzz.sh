@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Runs the scene fuzzer (mk/fuzz.mk builds it; see tests/fuzz/README.md).
 #
 #   fuzz.sh run     fuzz for FUZZ_SECONDS with FUZZ_JOBS processes on the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Stability cases: refraction, lights, recursion and sampling, image
  * sizes, properties, and the scenes in scenes/. */
 #include "stability.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Stability cases: tangents, ray origins, tiny and huge shapes, watertight
  * edges. */
 #include "stability.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Helpers of the stability suite: scenes, renders, image metrics and
  * direct calls (stability.h). */
 #include "stability.h"

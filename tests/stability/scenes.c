@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Stability cases: cameras inside objects, far and huge scenes,
  * degenerate shapes, coplanar quads. */
 #include "stability.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The stability suite's shared part: the helpers every case file uses
  * (tests/stability/helpers.c) and the one list of cases, in the order the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * math.h for the bench-only bare-metal build of the double reference
  * renderer (bench/softref): just what port/posix/ref_render.c calls, from

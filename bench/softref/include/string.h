@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * string.h for the bench-only bare-metal build of the double reference
  * renderer (bench/softref); port/baremetal/libc.c defines these.
