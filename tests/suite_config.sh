@@ -4,7 +4,7 @@
 # core/rt_scene.h, docs/embedding.md "Configuration"):
 # - an application compiled with other capacities than the core does not
 #   link, and the linker names the application's capacities (the case of
-#   issue 19: docs/examples/embed_example.c with -DRT_MAX_OBJECTS=16
+#   the reported case: docs/examples/embed_example.c with -DRT_MAX_OBJECTS=16
 #   -DRT_MAX_MATERIALS=12 -DRT_MAX_LIGHTS=2 against a default core, which
 #   used to overflow a global under ASan);
 # - the same program against a core with the same capacities links and
@@ -93,7 +93,7 @@ core named '-DRT_CONFIG_FILE="small_conf.h"' -I"$tmp/named" ||
 core found -I"$tmp/conf" ||
     bad "the core with fixtrace_conf.h does not compile: $(head -c 400 "$tmp/found.err")"
 
-# The mismatch of issue 19: a clear link error, and no program.
+# The reported mismatch: a clear link error, and no program.
 if app default $SMALL; then
     bad "an application with RT_MAX_OBJECTS=16 ... linked against a default core"
 elif grep -q "undefined reference to .rt_parse_cfg_o16_m12_l2" "$tmp/link.log" &&
