@@ -24,4 +24,12 @@ long inflate_zlib(const uint8_t *z, size_t zn, uint8_t *out, size_t cap,
 /* Adler-32 of n bytes, continuing from a (start with 1). */
 uint32_t deflate_adler32(uint32_t a, const uint8_t *p, size_t n);
 
+/* RFC 1951 3.2.5: the base length and extra bits of length symbols 257..285
+ * and the base distance and extra bits of distance symbols 0..29
+ * (deflate_tables.c). */
+extern const uint16_t len_base[29];
+extern const uint8_t len_extra[29];
+extern const uint16_t dist_base[30];
+extern const uint8_t dist_extra[30];
+
 #endif /* DEFLATE_H */
