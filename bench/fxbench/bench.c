@@ -9,7 +9,7 @@
 #include <stdint.h>
 #include "fx_math.h"
 #include "fx_vec.h"
-#include "rt_internal.h"
+#include "rt_shape.h"
 
 #define N 10000
 
@@ -151,7 +151,7 @@ static void shapes(uint32_t bv)
             R[i].o = org;
             R[i].d = fx_v3_normalize(fx_v3_sub(aim, org));
             R[i].e = rt_unit_err(R[i].d);
-            R[i].small = (uint8_t)rt_small3(org);
+            R[i].small = (uint8_t)fx_v3_small(org);
         }
         fx_t t;
         uint8_t part;
