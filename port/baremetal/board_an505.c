@@ -15,32 +15,22 @@
  * an385.
  */
 #include "port.h"
+#include "cmsdk_uart.h"
 
 #define FPGAIO_CLK100HZ (*(volatile const uint32_t *)0x50302014u)
 #define FPGAIO_COUNTER (*(volatile const uint32_t *)0x50302018u)
 #define TICKS_PER_CLK100 200000u
 
 
-/* CMSDK APB UART0 (OUTPUT=uart): DATA, STATE (bit 0: TX full), CTRL
- * (bit 0: TX enable; without it nothing is sent). QEMU ignores the baud
- * divider; on the FPGA board, BAUDDIV = clock / baud. */
-#define UART_BASE 0x50200000u
-#define UART_DATA (*(volatile uint32_t *)(UART_BASE + 0x0u))
-#define UART_STATE (*(volatile const uint32_t *)(UART_BASE + 0x4u))
-#define UART_CTRL (*(volatile uint32_t *)(UART_BASE + 0x8u))
-#define UART_BAUDDIV (*(volatile uint32_t *)(UART_BASE + 0x10u))
-
+/* UART0 for OUTPUT=uart (cmsdk_uart.h), 115200 baud at 20 MHz. */
 void port_uart_init(void)
 {
-    UART_BAUDDIV = 174u; /* 20 MHz / 115200 */
-    UART_CTRL = 1u;
+    cmsdk_uart_init(0x50200000u, 174u);
 }
 
 void port_uart_putc(uint8_t c)
 {
-    while (UART_STATE & 1u) {
-    }
-    UART_DATA = c;
+    cmsdk_uart_putc(0x50200000u, c);
 }
 
 void port_init(void)

@@ -26,6 +26,7 @@
  * length that spans wraps.
  */
 #include "port.h"
+#include "mpu_guard.h"
 #include "oled_ssd0323.h"
 #include "rt_grey.h"
 
@@ -53,13 +54,6 @@
 #define SYST_PERIOD (SYST_RELOAD + 1u)
 #define SYST_HANDLER_TICKS 32u /* 5 instructions * 6.4 ticks */
 
-/* MPU (as on the an385). */
-#define MPU_CTRL REG(0xE000ED94u)
-#define MPU_RNR REG(0xE000ED98u)
-#define MPU_RBAR REG(0xE000ED9Cu)
-#define MPU_RASR REG(0xE000EDA0u)
-
-extern uint32_t _sstack[];
 
 /* SysTick wraps since port_init(), counted by systick_handler. */
 volatile uint32_t systick_wraps __attribute__((used));
@@ -100,13 +94,7 @@ static void clock_50mhz(void)
 void port_init(void)
 {
     port_output_init();
-    /* An MPU guard over the lowest 32 bytes of the stack (board_an385.c):
-     * an overflow faults at once (exit 101). */
-    MPU_RNR = 0;
-    MPU_RBAR = (uint32_t)(uintptr_t)_sstack;
-    MPU_RASR = (1u << 28) | (4u << 1) | 1u; /* XN, no access, 32 B, on */
-    MPU_CTRL = 5u; /* enable, default map for everything else */
-    __asm__ volatile("dsb\n\tisb" : : : "memory");
+    mpu_guard_stack();
 
     clock_50mhz();
     SYST_RVR = SYST_RELOAD;
