@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* fx_vec: the vector operations too large to inline. */
 #include "fx_vec.h"
+#include "fx_rsqrt.h"
 
 fx_t fx_v3_dot(fx_vec3 a, fx_vec3 b)
 {
@@ -141,51 +142,6 @@ static inline fx_t unit_fast(int32_t b, uint32_t r)
 
 #endif
 
-#if RT_ACCURACY != 0
-/* 2^14 / sqrt(x) at the midpoint of x in [i, i+1) / 256, i = 64..255, so
- * that 1 - x * r0^2 is balanced around 0 (|it| < 2^-7). */
-static const uint16_t rsqrt_tab[192] = {
-    32641, 32391, 32146, 31907, 31673, 31445, 31221, 31002,
-    30787, 30577, 30371, 30169, 29972, 29778, 29587, 29401,
-    29217, 29038, 28861, 28688, 28518, 28350, 28186, 28024,
-    27866, 27709, 27556, 27405, 27256, 27110, 26966, 26825,
-    26686, 26548, 26413, 26280, 26149, 26020, 25893, 25767,
-    25644, 25522, 25402, 25283, 25167, 25051, 24938, 24826,
-    24715, 24606, 24498, 24392, 24287, 24184, 24081, 23980,
-    23881, 23782, 23685, 23589, 23494, 23400, 23307, 23216,
-    23125, 23036, 22947, 22860, 22774, 22688, 22604, 22520,
-    22437, 22356, 22275, 22195, 22116, 22037, 21960, 21883,
-    21808, 21732, 21658, 21585, 21512, 21440, 21368, 21298,
-    21228, 21159, 21090, 21022, 20955, 20888, 20822, 20757,
-    20692, 20628, 20564, 20501, 20439, 20377, 20316, 20255,
-    20195, 20135, 20076, 20017, 19959, 19902, 19845, 19788,
-    19732, 19676, 19621, 19566, 19512, 19458, 19405, 19352,
-    19299, 19247, 19196, 19144, 19093, 19043, 18993, 18943,
-    18894, 18845, 18797, 18749, 18701, 18653, 18606, 18560,
-    18513, 18467, 18422, 18376, 18331, 18287, 18242, 18198,
-    18155, 18111, 18068, 18025, 17983, 17941, 17899, 17857,
-    17816, 17775, 17734, 17694, 17654, 17614, 17574, 17535,
-    17496, 17457, 17418, 17380, 17342, 17304, 17267, 17229,
-    17192, 17155, 17119, 17082, 17046, 17010, 16974, 16939,
-    16904, 16869, 16834, 16799, 16765, 16731, 16697, 16663,
-    16629, 16596, 16563, 16530, 16497, 16465, 16432, 16400,
-};
-
-/* R ~ 2^45 / sqrt(m) for m in [2^30, 2^32), so R is in (2^29, 2^30].
- * Never above the truth, and at most 2^-20 below it (relative), as checked
- * over every m: the table seed r0, then with e = 1 - x r0^2 (x = m / 2^32)
- * the series r0 (1 - e)^-1/2 ~ r0 (1 + e/2 + 3e^2/8), whose next term is
- * below 2^-22.5. The -256 makes the result an underestimate. */
-static int32_t rsqrt_q29(uint32_t m)
-{
-    uint32_t r0 = rsqrt_tab[(m >> 24) - 64];
-    uint32_t p = (uint32_t)(((uint64_t)m * (r0 * r0)) >> 32); /* Q4.28 */
-    int32_t e = (int32_t)(0x10000000u - p); /* Q.28; |e| < 2^21 */
-    int32_t e7 = e >> 7;
-    int32_t poly = (e >> 1) + ((3 * ((e7 * e7) >> 14)) >> 3);
-    return (int32_t)(r0 << 15) + (((int32_t)r0 * (poly >> 6)) >> 7) - 256;
-}
-#endif
 
 #if RT_ACCURACY == 1
 /* round(b * R / 2^44), ties toward +infinity: the high word of the exact
@@ -198,19 +154,6 @@ static inline fx_t unit_component(int32_t b, int32_t r)
 #endif
 
 #if RT_ACCURACY == 2
-/* 2^46 / sqrt(m) from r = rsqrt_q29(m) by one Newton step, r (1 + e/2)
- * with e = 1 - m r^2 / 2^90 in [0, 2^-19] (r is low): below the truth by
- * at most 3e^2/8 plus truncation, about 2^-30 (relative). */
-static uint32_t rsqrt_q30(uint32_t m, int32_t r)
-{
-    uint32_t ur = (uint32_t)r; /* (2^29, 2^30] */
-    uint64_t r2 = (uint64_t)ur * ur; /* < 2^60 */
-    /* m r^2 / 2^32, low by at most 2: at most 2^58 since r is low. */
-    uint64_t p = (uint64_t)m * (uint32_t)(r2 >> 32) +
-                 (((uint64_t)m * (uint32_t)r2) >> 32);
-    uint64_t e = ((uint64_t)1 << 58) - p; /* e * 2^58, below 2^39 */
-    return 2 * ur + (uint32_t)(((uint64_t)ur * (e >> 8)) >> 50);
-}
 
 /* hi:lo = a * b, exact, from four 32-bit products. */
 static void mul_128(uint64_t a, uint64_t b, uint64_t *hi, uint64_t *lo)
@@ -295,13 +238,13 @@ fx_vec3 fx_v3_normalize(fx_vec3 a)
     /* u = b * 2^17 / sqrt(m * 2^32) = b * (2^45 / sqrt(m)) / 2^44. R is
      * an underestimate by at most 2^-20, so |u| never rounds past 1 and
      * each component is within 0.5 + 2^-4 ulp of the truth. */
-    int32_t r = rsqrt_q29(m);
+    int32_t r = fx_rsqrt_q29(m);
 #endif
 #if RT_ACCURACY == 1
     return fx_v3(unit_component(bx, r), unit_component(by, r),
                  unit_component(bz, r));
 #elif RT_ACCURACY == 2
-    uint32_t r46 = rsqrt_q30(m, r);
+    uint32_t r46 = fx_rsqrt_q30(m, r);
     return fx_v3(unit_exact(a.x, bx, r46, len2),
                  unit_exact(a.y, by, r46, len2),
                  unit_exact(a.z, bz, r46, len2));

@@ -1,0 +1,43 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * fx_rsqrt: reciprocal square roots of a normalised 32-bit mantissa m in
+ * [2^30, 2^32), the step both unit-vector builders share (fx_v3_normalize
+ * in fx_vec.c, fx_d3_normalize in fx_dir.c). Internal to the core.
+ */
+#ifndef FX_RSQRT_H
+#define FX_RSQRT_H
+
+#include <stdint.h>
+
+extern const uint16_t fx_rsqrt_tab[192];
+
+/* R ~ 2^45 / sqrt(m) for m in [2^30, 2^32), so R is in (2^29, 2^30].
+ * Never above the truth, and at most 2^-20 below it (relative), as checked
+ * over every m: the table seed r0, then with e = 1 - x r0^2 (x = m / 2^32)
+ * the series r0 (1 - e)^-1/2 ~ r0 (1 + e/2 + 3e^2/8), whose next term is
+ * below 2^-22.5. The -256 makes the result an underestimate. */
+static inline int32_t fx_rsqrt_q29(uint32_t m)
+{
+    uint32_t r0 = fx_rsqrt_tab[(m >> 24) - 64];
+    uint32_t p = (uint32_t)(((uint64_t)m * (r0 * r0)) >> 32); /* Q4.28 */
+    int32_t e = (int32_t)(0x10000000u - p); /* Q.28; |e| < 2^21 */
+    int32_t e7 = e >> 7;
+    int32_t poly = (e >> 1) + ((3 * ((e7 * e7) >> 14)) >> 3);
+    return (int32_t)(r0 << 15) + (((int32_t)r0 * (poly >> 6)) >> 7) - 256;
+}
+
+/* 2^46 / sqrt(m) from r = fx_rsqrt_q29(m) by one Newton step, r (1 + e/2)
+ * with e = 1 - m r^2 / 2^90 in [0, 2^-19] (r is low): below the truth by
+ * at most 3e^2/8 plus truncation, about 2^-30 (relative). */
+static inline uint32_t fx_rsqrt_q30(uint32_t m, int32_t r)
+{
+    uint32_t ur = (uint32_t)r; /* (2^29, 2^30] */
+    uint64_t r2 = (uint64_t)ur * ur; /* < 2^60 */
+    /* m r^2 / 2^32, low by at most 2: at most 2^58 since r is low. */
+    uint64_t p = (uint64_t)m * (uint32_t)(r2 >> 32) +
+                 (((uint64_t)m * (uint32_t)r2) >> 32);
+    uint64_t e = ((uint64_t)1 << 58) - p; /* e * 2^58, below 2^39 */
+    return 2 * ur + (uint32_t)(((uint64_t)ur * (e >> 8)) >> 50);
+}
+
+#endif /* FX_RSQRT_H */
