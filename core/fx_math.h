@@ -225,10 +225,11 @@ uint32_t fx_isqrt64(uint64_t a);
  * Cortex-M). */
 uint32_t fx_udiv64_32(uint64_t n, uint32_t d);
 
-/* tan(deg / 2) for an angle of 0 < deg < 180 degrees: relative error about
- * 2^-28 before the final rounding to nearest; saturates to FX_MAX near
- * 180; deg <= 0 gives 0. */
-fx_t fx_tan_half_deg(fx_t deg);
+/* tan(deg / 2) for an angle of 0 < deg < 180 degrees, as Q32.32 (32
+ * fraction bits, so that a small field of view keeps its precision):
+ * relative error about 2^-28 before the final rounding to nearest;
+ * saturates to 2^47 - 1 (just below 32768) near 180; deg <= 0 gives 0. */
+int64_t fx_tan_half_deg_q32(fx_t deg);
 
 /* x^n for 0 <= x <= 1 by repeated squaring; each product rounds as fx_mul,
  * so the result is within about n ulps and never above 1. */

@@ -27,7 +27,7 @@ static void sincos30(int64_t x, int64_t *s, int64_t *c)
     *c = cs;
 }
 
-fx_t fx_tan_half_deg(fx_t deg)
+int64_t fx_tan_half_deg_q32(fx_t deg)
 {
     /* pi / 360 in Q2.30: half the angle, in radians. */
     const int64_t half_rad = 9370165; /* round(2^30 * pi / 360) */
@@ -44,8 +44,11 @@ fx_t fx_tan_half_deg(fx_t deg)
     } else {
         sincos30(halfpi - x, &c, &s); /* tan x = cot(pi/2 - x) */
     }
+    const int64_t most = ((int64_t)1 << 47) - 1;
     if (c <= 0)
-        return FX_MAX;
-    int64_t q = (s * 65536 + c / 2) / c;
-    return fx_sat64(q);
+        return most;
+    /* s < 2^31, so s 2^32 < 2^63; a quotient past 2^47 saturates. */
+    if (s >= (c << 15)) /* s / c >= 32768 */
+        return most;
+    return ((s << 32) + c / 2) / c;
 }

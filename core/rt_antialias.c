@@ -18,7 +18,7 @@ static fx_t clamp01(fx_t v)
 typedef struct {
     rt_row_spans hit;
     int32_t lo, hi; /* columns outside [lo, hi] can hit nothing */
-    fx_vec3 base[RT_MAX_SPP_SIDE]; /* w + sy up for each sample row */
+    rt_cam_ray base[RT_MAX_SPP_SIDE]; /* w + sy up for each sample row */
 } row_spans;
 
 static void row_setup(row_spans *rs, const rt_tracer *tr,
@@ -27,8 +27,8 @@ static void row_setup(row_spans *rs, const rt_tracer *tr,
     const rt_scene *s = tr->scene;
     const unsigned n = cf->n;
     for (unsigned j = 0; j < n; j++) {
-        fx_t sy = rt_cam_offset(cf, rt_cam_row_k(o->height, n, y, j));
-        rs->base[j] = fx_v3_madd(cf->w, cf->up, sy);
+        int32_t sy = rt_cam_soff(cf, rt_cam_row_k(o->height, n, y, j));
+        rs->base[j] = rt_cam_row_base(cf, sy);
     }
     if (RT_CULL) {
         rt_cull_row(s, cf, o->width, o->height, y, &rs->hit);
@@ -55,11 +55,12 @@ static void row_setup(row_spans *rs, const rt_tracer *tr,
  * frame (under rt_cull_row) stays small. */
 RT_NOINLINE static rt_rgb sample(const rt_tracer *tr, rt_work *wk,
                                  const rt_cam_frame *cf, const row_spans *rs,
-                                 fx_vec3 base, int32_t k, unsigned x)
+                                 const rt_cam_ray *base, int32_t k,
+                                 unsigned x)
 {
     rt_ray r;
-    fx_vec3 d = rt_cam_dir(cf, base, rt_cam_offset(cf, k));
-    rt_ray_set(&r, tr->scene->cam.eye, fx_v3_normalize(d));
+    rt_ray_set(&r, tr->scene->cam.eye,
+               rt_cam_dir(cf, base, rt_cam_soff(cf, k)));
     RT_COUNT(wk, primary);
     return rt_trace_camera(tr, wk, &r, &rs->hit, x);
 }
@@ -77,7 +78,7 @@ static void pixel(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
     if (n == 1) { /* the common case, without the loops and the mean */
         rt_rgb c = tr->scene->background;
         if (covered)
-            c = sample(tr, wk, cf, rs, rs->base[0],
+            c = sample(tr, wk, cf, rs, &rs->base[0],
                        rt_cam_col_k(o->width, 1, x, 0), x);
         else if (RT_STATS && wk->stats)
             wk->stats->primary++;
@@ -97,7 +98,7 @@ static void pixel(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
         sum[2] = (uint32_t)clamp01(bg.b) * spp;
     }
     for (unsigned j = 0; covered && j < n; j++) {
-        fx_vec3 base = rs->base[j];
+        const rt_cam_ray *base = &rs->base[j];
         for (unsigned i = 0; i < n; i++) {
             rt_rgb c = sample(tr, wk, cf, rs, base,
                               rt_cam_col_k(o->width, n, x, i), x);
@@ -138,7 +139,7 @@ rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
     rt_cam_frame cf1_store;
     const rt_cam_frame *cf1 = &cf1_store;
     row_spans rs;
-    rt_cam_setup(&cf1_store, tr->scene, o->height, 1);
+    rt_cam_setup(&cf1_store, tr->scene, o->width, o->height, 1);
     const unsigned w = o->width;
     uint8_t *slot[3];
     int slot_y[3] = { -1, -1, -1 };

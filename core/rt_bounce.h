@@ -1,32 +1,68 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * rt_bounce: the directions of secondary rays: the mirror direction and
- * Snell's law, with total internal reflection. Internal.
+ * Snell's law, with total internal reflection. Both work at the full
+ * FX_UBITS of the unit vectors (fx_dir.h). Internal.
  */
 #ifndef RT_BOUNCE_H
 #define RT_BOUNCE_H
 
-#include "fx_vec.h"
+#include "fx_dir.h"
 
-/* Mirror direction d - 2 (d.n) n of unit d about unit n, renormalised. */
-static inline fx_vec3 rt_reflect_dir(fx_vec3 d, fx_vec3 n)
+/* Mirror direction d - 2 (d.n) n of unit d about unit n, renormalised.
+ * Each component is formed exactly from the rounded d.n, with 2 FX_UBITS
+ * fraction bits (below 2^62), then normalised. */
+static inline fx_dir3 rt_reflect_dir(fx_dir3 d, fx_dir3 n)
 {
-    /* d and n are unit vectors: |2 d.n| <= 2. */
-    return fx_v3_normalize(fx_v3_madd_unit(d, n, -2 * fx_v3_dotn(d, n)));
+    const int64_t k = 2 * (int64_t)fx_d3_dotu(d, n);
+    return fx_d3_normalize64((int64_t)d.x * FX_UONE - k * n.x,
+                             (int64_t)d.y * FX_UONE - k * n.y,
+                             (int64_t)d.z * FX_UONE - k * n.z);
+}
+
+/* Bit length of a non-negative value (0 for 0). */
+static inline int rt_bitlen64(uint64_t v)
+{
+    return v ? 64 - fx_clz64(v) : 0;
 }
 
 /* Transmitted direction of unit d through a surface of unit normal n
- * (facing the ray) with eta = n1 / n2, by Snell's law: 1 and *t, or 0 on
- * total internal reflection. */
-static inline int rt_refract_dir(fx_vec3 d, fx_vec3 n, fx_t eta, fx_vec3 *t)
+ * (facing the ray) with eta = n1 / n2 (Q16.16, at most 100), by Snell's
+ * law: 1 and *t, or 0 on total internal reflection. t = eta d + f n with
+ * f = eta cos_i - sqrt(k), k = 1 - eta^2 (1 - cos_i^2). Everything is in
+ * FX_UBITS fraction bits, and eta^2 stays exact (Q32.32), so the
+ * total-internal-reflection decision k < 0 is not noise even for a large
+ * eta. */
+static inline int rt_refract_dir(fx_dir3 d, fx_dir3 n, fx_t eta, fx_dir3 *t)
 {
-    fx_t cosi = fx_neg(fx_v3_dotn(d, n));
-    fx_t sin2 = fx_sub(FX_ONE, fx_mul(cosi, cosi));
-    fx_t k = fx_sub(FX_ONE, fx_mul(fx_mul(eta, eta), sin2));
+    const int64_t one = (int64_t)1 << FX_UBITS;
+    const int64_t cosi = -(int64_t)fx_d3_dotu(d, n); /* in [0, 1] */
+    const int64_t sin2 = one - ((cosi * cosi) >> FX_UBITS); /* [0, 1] */
+    /* eta^2 sin2 / 2^32 with eta^2 = e1 2^16 + e0 (Q32.32): two products
+     * below 2^61 instead of one of 76 bits. */
+    const int64_t eta2 = (int64_t)eta * eta; /* < 2^46 */
+    const int64_t e1 = eta2 >> 16, e0 = eta2 & 0xFFFF;
+    const int64_t es = (e1 * sin2 + ((e0 * sin2) >> 16)) >> 16;
+    const int64_t k = one - es;
     if (k < 0)
         return 0;
-    fx_t f = fx_sub(fx_mul(eta, cosi), fx_sqrt(k));
-    *t = fx_v3_normalize(fx_v3_madd(fx_v3_scale(d, eta), n, f));
+    /* sqrt(k) with FX_UBITS fraction bits: k << FX_UBITS <= 2^60. */
+    const int64_t sq = (int64_t)fx_isqrt64((uint64_t)k << FX_UBITS);
+    /* eta cos_i to FX_UBITS fraction bits, rounded (below 2^37). */
+    const int64_t ec = ((int64_t)eta * cosi + 0x8000) >> 16;
+    int64_t ce = (int64_t)eta << FX_USHIFT; /* eta, FX_UBITS fraction bits */
+    int64_t cf = ec - sq;
+    /* Only the direction of ce d + cf n matters: scale both coefficients
+     * into 31 bits, so each product stays below 2^61. */
+    const uint64_t ace = (uint64_t)ce;
+    const uint64_t acf = (uint64_t)(cf < 0 ? -cf : cf);
+    const int sh = rt_bitlen64(ace > acf ? ace : acf) - 31;
+    if (sh > 0) {
+        ce = (ce + ((int64_t)1 << (sh - 1))) >> sh;
+        cf = (cf + ((int64_t)1 << (sh - 1))) >> sh;
+    }
+    *t = fx_d3_normalize64(ce * d.x + cf * n.x, ce * d.y + cf * n.y,
+                           ce * d.z + cf * n.z);
     return 1;
 }
 

@@ -11,19 +11,37 @@
 
 /* The view of one render at n x n samples per pixel. */
 typedef struct {
-    fx_vec3 w, right, up; /* unit: forward, right and up */
+    fx_dir3 w, right, up; /* unit: forward, right and up */
     int64_t step; /* screen offset per unit of k: half / (n H), 32 frac bits */
+    int fbits;    /* fraction bits of rt_cam_soff, 2..30 */
     unsigned n;   /* grid side */
 } rt_cam_frame;
 
-/* Sets *cf for scene s's camera, an image height and grid side n. */
-void rt_cam_setup(rt_cam_frame *cf, const rt_scene *s, unsigned height,
-                  unsigned n);
+/* A sample's direction before normalisation: w + sy up + sx right, exact,
+ * with FX_UBITS + cf->fbits fraction bits (each component below 2^63). */
+typedef struct {
+    int64_t x, y, z;
+} rt_cam_ray;
 
-/* Screen offset k * half / (n H) as Q16.16; |k| <= n * 2 * RT_MAX_WIDTH. */
+/* Sets *cf for scene s's camera, an image of width x height and grid
+ * side n. */
+void rt_cam_setup(rt_cam_frame *cf, const rt_scene *s, unsigned width,
+                  unsigned height, unsigned n);
+
+/* Screen offset k * half / (n H) as Q16.16; |k| <= n * 2 * RT_MAX_WIDTH.
+ * The culling works with these. */
 static inline fx_t rt_cam_offset(const rt_cam_frame *cf, int32_t k)
 {
     return fx_sat64(((int64_t)k * cf->step + 0x8000) >> 16);
+}
+
+/* The same offset with cf->fbits fraction bits, rounded to nearest: as
+ * many as keep every sample of the image within 31 bits, so that a camera
+ * ray is as precise as its unit vector, not limited to Q16.16. */
+static inline int32_t rt_cam_soff(const rt_cam_frame *cf, int32_t k)
+{
+    const int sh = 32 - cf->fbits;
+    return (int32_t)(((int64_t)k * cf->step + ((int64_t)1 << (sh - 1))) >> sh);
 }
 
 /* k of sample row j of pixel row y (upwards from the image centre). */
@@ -40,15 +58,24 @@ static inline int32_t rt_cam_col_k(unsigned width, unsigned n, unsigned x,
     return (int32_t)(2 * x * n + 2 * i + 1) - (int32_t)(width * n);
 }
 
-/* Direction (not unit) of the sample at screen offset sx along a sample
- * row whose centre direction is base (w + sy up). */
-static inline fx_vec3 rt_cam_dir(const rt_cam_frame *cf, fx_vec3 base,
-                                 fx_t sx)
+/* w + sy up for a sample row at offset sy (rt_cam_soff), exact. */
+static inline rt_cam_ray rt_cam_row_base(const rt_cam_frame *cf, int32_t sy)
 {
-    const fx_t lim = (fx_t)1 << 30; /* fx_v3_madd_unit's range */
-    /* right is a unit vector: the cheaper madd gives the same values. */
-    return sx >= -lim && sx <= lim ? fx_v3_madd_unit(base, cf->right, sx)
-                                   : fx_v3_madd(base, cf->right, sx);
+    rt_cam_ray b;
+    b.x = ((int64_t)cf->w.x << cf->fbits) + (int64_t)cf->up.x * sy;
+    b.y = ((int64_t)cf->w.y << cf->fbits) + (int64_t)cf->up.y * sy;
+    b.z = ((int64_t)cf->w.z << cf->fbits) + (int64_t)cf->up.z * sy;
+    return b;
+}
+
+/* Unit direction of the sample at offset sx (rt_cam_soff) along the
+ * sample row whose base is b (rt_cam_row_base). */
+static inline fx_dir3 rt_cam_dir(const rt_cam_frame *cf, const rt_cam_ray *b,
+                                 int32_t sx)
+{
+    return fx_d3_normalize64(b->x + (int64_t)cf->right.x * sx,
+                             b->y + (int64_t)cf->right.y * sx,
+                             b->z + (int64_t)cf->right.z * sx);
 }
 
 #endif /* RT_CAMERA_H */

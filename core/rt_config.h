@@ -84,6 +84,15 @@
 #define RT_ACCURACY 1
 #endif
 
+/* Fraction bits of unit vectors: ray directions, normals, directions to
+ * lights and the camera frame (core/fx_dir.h), 16..30. Positions,
+ * distances and colours are Q16.16 whatever this says. 30 (Q2.30) is the
+ * default: the image is then within rounding of float32 at a few percent
+ * of the cost of 16; docs/accuracy.md measures each setting. */
+#ifndef RT_UNIT_BITS
+#define RT_UNIT_BITS 30
+#endif
+
 /* 1: camera rays test only the objects their pixel row and column can
  * reach (rt_cull.c; costs RT_MAX_OBJECTS * 6 bytes of stack). 0: every
  * camera ray tests every object. The image is the same either way. */

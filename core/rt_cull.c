@@ -54,12 +54,12 @@ static void cull_obj_set(cull_obj *k, const rt_object *o, const rt_scene *s,
     if (o->kind == RT_QUAD) {
         /* The eye's side of the plane; a hit needs d.n of the other sign.
          * Too close to the plane to tell: no plane culling. */
-        fx_t num = fx_sub(o->dist, fx_v3_dot(s->cam.eye, o->n));
+        fx_t num = fx_sub(o->dist, fx_pd_dot(s->cam.eye, o->n));
         if (num > 256 || num < -256) {
             k->side = num > 0 ? 1 : -1;
-            k->pa = fx_v3_dotn(cf->w, o->n);
-            k->pb = fx_v3_dotn(cf->up, o->n);
-            k->pc = fx_v3_dotn(cf->right, o->n);
+            k->pa = fx_d3_dot(cf->w, o->n);
+            k->pb = fx_d3_dot(cf->up, o->n);
+            k->pc = fx_d3_dot(cf->right, o->n);
         }
     }
 }
@@ -67,18 +67,24 @@ static void cull_obj_set(cull_obj *k, const rt_object *o, const rt_scene *s,
 /* The plane of one sample row. */
 typedef struct {
     fx_t sy;
-    fx_vec3 f;  /* unit, along w + sy up */
-    fx_vec3 nr; /* unit normal of the row's plane */
+    fx_dir3 f;  /* unit, along w + sy up */
+    fx_dir3 nr; /* unit normal of the row's plane */
     fx_t len;   /* |w + sy up| */
 } row_plane;
 
-static void row_plane_set(row_plane *rp, const rt_cam_frame *cf, fx_t sy)
+/* The plane through the eye that holds every ray of sample row k: built
+ * from the very base the rays are (rt_cam_row_base), so it holds them to
+ * the precision of unit vectors. Its length and sy only scale and bound
+ * the intervals, whose padding covers their Q16.16 rounding. */
+static void row_plane_set(row_plane *rp, const rt_cam_frame *cf, int32_t k)
 {
-    fx_vec3 fu = fx_v3_madd(cf->w, cf->up, sy);
+    const fx_t sy = rt_cam_offset(cf, k);
+    const rt_cam_ray b = rt_cam_row_base(cf, rt_cam_soff(cf, k));
+    fx_vec3 fu = fx_v3_madd(fx_d3_to_v3(cf->w), fx_d3_to_v3(cf->up), sy);
     rp->sy = sy;
     rp->len = fx_v3_length(fu);
-    rp->f = fx_v3_normalize(fu);
-    rp->nr = fx_v3_cross_unit(rp->f, cf->right);
+    rp->f = fx_d3_normalize64(b.x, b.y, b.z);
+    rp->nr = fx_d3_cross_unit(fx_d3_raw(rp->f), fx_d3_raw(cf->right));
 }
 
 /* tan(phi + sg * alpha) from the two tangents; +-S_INF past 90 degrees. */
@@ -99,11 +105,11 @@ static int row_interval(const cull_obj *k, const rt_cam_frame *cf,
     *lo = -S_INF;
     *hi = S_INF;
     if (!k->all && sy < FX_INT(64) && sy > -FX_INT(64)) {
-        fx_t h = fx_v3_dot(k->p, rp->nr);
+        fx_t h = fx_pd_dot(k->p, rp->nr);
         if (h >= k->r || h <= -k->r)
             return 0; /* the row's plane misses the sphere */
         uint64_t r2 = (uint64_t)((int64_t)k->r * k->r - (int64_t)h * h);
-        fx_t pf = fx_v3_dot(k->p, rp->f), pr = fx_v3_dot(k->p, cf->right);
+        fx_t pf = fx_pd_dot(k->p, rp->f), pr = fx_pd_dot(k->p, cf->right);
         uint64_t d2 = (uint64_t)((int64_t)pf * pf) +
                       (uint64_t)((int64_t)pr * pr);
         if (pf < 0 && (uint64_t)((int64_t)pf * pf) > r2)
@@ -176,8 +182,7 @@ void rt_cull_row(const rt_scene *s, const rt_cam_frame *cf, unsigned width,
     const unsigned n = cf->n;
     row_plane rp[RT_MAX_SPP_SIDE];
     for (unsigned j = 0; j < n; j++) {
-        row_plane_set(&rp[j], cf,
-                      rt_cam_offset(cf, rt_cam_row_k(height, n, y, j)));
+        row_plane_set(&rp[j], cf, rt_cam_row_k(height, n, y, j));
     }
     for (unsigned i = 0; i < s->n_objects; i++) {
         int64_t lo = S_INF, hi = -S_INF;

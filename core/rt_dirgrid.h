@@ -67,25 +67,28 @@ static inline const uint32_t *rt_dir_cell(const rt_dir_grid *g, fx_t ux,
 /* Rays leaving object i (i < n_objects) in direction d: 1 with *cand set
  * to what they may hit (rt_dir_cell) if i has a grid, else 0. */
 static inline int rt_dir_from_object(const rt_dir_grids *gs, unsigned i,
-                                     unsigned n_objects, fx_vec3 d,
+                                     unsigned n_objects, fx_dir3 d,
                                      const uint32_t **cand)
 {
     if (i >= n_objects || gs->from[i] == RT_DIR_NONE)
         return 0;
-    *cand = rt_dir_cell(&gs->grid[gs->from[i]], d.x, d.y, d.z, gs->words);
+    /* The grids are laid out in Q16.16: d rounded to it (within half an
+     * ulp of the truth, inside the grids' margins). */
+    *cand = rt_dir_cell(&gs->grid[gs->from[i]], fx_u_to_fx(d.x),
+                        fx_u_to_fx(d.y), fx_u_to_fx(d.z), gs->words);
     return 1;
 }
 
 /* Shadow rays towards light li along unit direction ld: 1 with *cand set
  * to what may block them if the light has a grid, else 0. */
 static inline int rt_dir_to_light(const rt_dir_grids *gs, unsigned li,
-                                  fx_vec3 ld, const uint32_t **cand)
+                                  fx_dir3 ld, const uint32_t **cand)
 {
     if (gs->light[li] == RT_DIR_NONE)
         return 0;
-    /* Seen from the light, the ray runs along -ld. */
-    *cand = rt_dir_cell(&gs->grid[gs->light[li]], -ld.x, -ld.y, -ld.z,
-                        gs->words);
+    /* Seen from the light, the ray runs along -ld (rounded as above). */
+    *cand = rt_dir_cell(&gs->grid[gs->light[li]], fx_u_to_fx(-ld.x),
+                        fx_u_to_fx(-ld.y), fx_u_to_fx(-ld.z), gs->words);
     return 1;
 }
 
@@ -102,7 +105,7 @@ static inline void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s)
 }
 
 static inline int rt_dir_from_object(const rt_dir_grids *gs, unsigned i,
-                                     unsigned n_objects, fx_vec3 d,
+                                     unsigned n_objects, fx_dir3 d,
                                      const uint32_t **cand)
 {
     (void)gs, (void)i, (void)n_objects, (void)d, (void)cand;
@@ -110,7 +113,7 @@ static inline int rt_dir_from_object(const rt_dir_grids *gs, unsigned i,
 }
 
 static inline int rt_dir_to_light(const rt_dir_grids *gs, unsigned li,
-                                  fx_vec3 ld, const uint32_t **cand)
+                                  fx_dir3 ld, const uint32_t **cand)
 {
     (void)gs, (void)li, (void)ld, (void)cand;
     return 0;

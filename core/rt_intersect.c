@@ -24,6 +24,9 @@
 #define RT_LINEAR_MIN_B 256
 #define RT_STEEP_MIN_A 256
 
+/* Half of a unit vector's last bit, for products rounded to Q16.16. */
+#define UHALF ((int64_t)1 << (FX_UBITS - 1))
+
 /* Closest approach of the ray to the bounding sphere (c, r). Returns 0 when
  * the ray misses it or meets it only outside (tmin, tmax); else *tca
  * (Q16.16, may exceed the fx_t range), *disc = r^2 - |h|^2 (Q32.32, the
@@ -46,7 +49,7 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         int64_t q = (int64_t)ox * ray->d.x + (int64_t)oy * ray->d.y +
                     (int64_t)oz * ray->d.z;
         /* |t| <= |oc| < sqrt(3) 2^30, so t fits; t +- r may not. */
-        int32_t t32 = (int32_t)((q + 0x8000) >> 16);
+        int32_t t32 = (int32_t)((q + UHALF) >> FX_UBITS);
         t32 -= (int32_t)(((int64_t)t32 * ray->e + ((int64_t)1 << 31)) >> 32);
 #if FX_HAVE_OVERFLOW_BUILTINS
         /* The same tests in 32 bits (r >= 0): t32 + r <= tmin is
@@ -62,9 +65,9 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
             return 0;
 #endif
         /* Each h component is bounded by |oc| (h is a projection). */
-        int32_t hx = ox - (int32_t)(((int64_t)t32 * ray->d.x + 0x8000) >> 16);
-        int32_t hy = oy - (int32_t)(((int64_t)t32 * ray->d.y + 0x8000) >> 16);
-        int32_t hz = oz - (int32_t)(((int64_t)t32 * ray->d.z + 0x8000) >> 16);
+        int32_t hx = ox - (int32_t)(((int64_t)t32 * ray->d.x + UHALF) >> FX_UBITS);
+        int32_t hy = oy - (int32_t)(((int64_t)t32 * ray->d.y + UHALF) >> FX_UBITS);
+        int32_t hz = oz - (int32_t)(((int64_t)t32 * ray->d.z + UHALF) >> FX_UBITS);
         if (hx > r || hx < -r || hy > r || hy < -r || hz > r || hz < -r)
             return 0;
         h[0] = hx;
@@ -75,15 +78,16 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         int64_t ox = (int64_t)c.x - ray->o.x;
         int64_t oy = (int64_t)c.y - ray->o.y;
         int64_t oz = (int64_t)c.z - ray->o.z;
-        /* |oc| < 2^33 and |d| <= 2^16: each product stays below 2^49. */
+        /* Each |oc| component is below 2^32 and |d| is 1: every partial
+         * sum is below |oc| 2^FX_UBITS < 2^63. */
         int64_t q = ox * ray->d.x + oy * ray->d.y + oz * ray->d.z;
-        t = (q + 0x8000) >> 16;
+        t = (q + UHALF) >> FX_UBITS;
         t -= (t * ray->e + ((int64_t)1 << 31)) >> 32;
         if (t + r <= tmin || t - r >= tmax)
             return 0; /* wholly behind the origin or beyond tmax */
-        h[0] = ox - ((t * ray->d.x + 0x8000) >> 16);
-        h[1] = oy - ((t * ray->d.y + 0x8000) >> 16);
-        h[2] = oz - ((t * ray->d.z + 0x8000) >> 16);
+        h[0] = ox - ((t * ray->d.x + UHALF) >> FX_UBITS);
+        h[1] = oy - ((t * ray->d.y + UHALF) >> FX_UBITS);
+        h[2] = oz - ((t * ray->d.z + UHALF) >> FX_UBITS);
         if (h[0] > r || h[0] < -r || h[1] > r || h[1] < -r || h[2] > r ||
             h[2] < -r)
             return 0;
@@ -98,18 +102,22 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
     return 1;
 }
 
-/* Distance along d (d != 0) from coordinate o to the plane at coordinate
- * p, truncated: hit_quad's formula for an axis-aligned quad, so that
- * shapes lying in such a quad's plane tie with it exactly. A distance of
- * 2^32 or more (beyond any tmax) comes back as INT64_MAX or -INT64_MAX. */
-static int64_t plane_t(int64_t p, fx_t o, fx_t d)
+/* Distance along the unit component d (d != 0) from coordinate o to the
+ * plane at coordinate p, (p - o) / d truncated: hit_quad's value for an
+ * axis-aligned quad, so that shapes lying in such a quad's plane tie with
+ * it exactly. A distance of 2^32 or more (beyond any tmax) comes back as
+ * INT64_MAX or -INT64_MAX. */
+static int64_t plane_t(int64_t p, fx_t o, int32_t d)
 {
-    int64_t num = (p - o) * 65536; /* |p - o| < 2^33 */
-    uint64_t un = (uint64_t)(num < 0 ? -num : num);
-    uint32_t ud = (uint32_t)(d < 0 ? -(int64_t)d : d);
-    int neg = (num < 0) != (d < 0);
-    if ((un >> 32) >= ud)
+    int64_t dp = p - o; /* |p - o| < 2^33 */
+    int neg = (dp < 0) != (d < 0);
+    uint64_t adp = (uint64_t)(dp < 0 ? -dp : dp);
+    uint32_t ud = (uint32_t)(d < 0 ? -(int64_t)d : d); /* <= 2^FX_UBITS */
+    /* t = |p - o| 2^FX_UBITS / |d| in Q16.16; at |p - o| >= 2^32 it is
+     * 2^32 or more, as |d| <= 2^FX_UBITS. */
+    if ((adp >> 32) != 0 || ((adp << FX_UBITS) >> 32) >= ud)
         return neg ? -INT64_MAX : INT64_MAX;
+    uint64_t un = adp << FX_UBITS;
     int64_t q = fx_udiv64_32(un, ud); /* the same truncation as C's / */
     return neg ? -q : q;
 }
@@ -148,34 +156,38 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
     /* A flat quad (rt_object.flat) has n = (0, n.y, 0): the same sums
      * without the zero terms. */
     const int flat = o->flat;
-    int64_t den = flat ? (int64_t)r->d.y * o->n.y : fx_v3_dot_q32(r->d, o->n);
-    if (den < RT_PAR_Q32 && den > -RT_PAR_Q32)
+    int64_t den = flat ? (int64_t)r->d.y * o->n.y : fx_d3_dot_raw(r->d, o->n);
+    if (den < RT_PAR_DOT && den > -RT_PAR_DOT)
         return 0;
-    /* num = (dist - o.n) in Q32.32; t = num / den, with den kept to 24
-     * fractional bits so grazing rays keep their precision. */
-    int64_t num = (int64_t)o->dist * 65536 -
+    /* num = dist - o.n with 16 + FX_UBITS fraction bits (|num| < 2^63);
+     * den = d.n with 2 FX_UBITS. */
+    int64_t num = (int64_t)o->dist * FX_UONE -
                   (flat ? (int64_t)r->o.y * o->n.y
-                        : fx_v3_dot_q32(r->o, o->n));
+                        : fx_pd_dot_raw(r->o, o->n));
     if ((num < 0) != (den < 0))
         return 0;
-    int64_t den24 = den >> 8;
-    if (den24 == 0)
+    /* t = num 2^FX_UBITS / den in Q16.16, both of one sign, truncated: a
+     * 64/32 division by den's top 32 bits (2^-31 relative, so grazing
+     * rays keep their precision). A quotient of 2^32 or more is beyond
+     * any tmax. The sd bits den drops are zero for an axis-aligned quad
+     * (den = d.y 2^FX_UBITS, sd <= FX_UBITS), so there t is plane_t's. */
+    uint64_t un = (uint64_t)(num < 0 ? -num : num);
+    uint64_t uden = (uint64_t)(den < 0 ? -den : den);
+    int sd = 32 - fx_clz64(uden);
+    if (sd < 0)
+        sd = 0;
+    const uint32_t ud = (uint32_t)(uden >> sd);
+    const int lsh = FX_UBITS - sd; /* 0..FX_UBITS, as |den| <= 2^61 */
+    if ((un >> (32 - lsh)) >= ud)
         return 0;
-    /* t = num * 256 / den24, both of one sign. |num| < 2^49, so the
-     * dividend stays below 2^57; a quotient of 2^32 or more is beyond any
-     * tmax, so a 64/32 division with a 32-bit quotient suffices. */
-    uint64_t un = (uint64_t)(num < 0 ? -num : num) << 8;
-    uint32_t ud = (uint32_t)(den24 < 0 ? -den24 : den24);
-    if ((un >> 32) >= ud)
-        return 0;
-    uint32_t tq = fx_udiv64_32(un, ud);
+    uint32_t tq = fx_udiv64_32(un << lsh, ud);
     if ((int64_t)tq <= tmin || (int64_t)tq >= tmax)
         return 0;
     const fx_t tt = (fx_t)tq; /* below tmax, so it fits */
     int64_t qx = (int64_t)r->o.x - o->a.x +
-                 (((int64_t)tt * r->d.x + 0x8000) >> 16);
+                 (((int64_t)tt * r->d.x + UHALF) >> FX_UBITS);
     int64_t qz = (int64_t)r->o.z - o->a.z +
-                 (((int64_t)tt * r->d.z + 0x8000) >> 16);
+                 (((int64_t)tt * r->d.z + UHALF) >> FX_UBITS);
     int64_t u, v;
     if (flat == 1) { /* pu = (0, 0, pu.z), pv = (pv.x, 0, 0) */
         u = qz * o->pu.z;
@@ -185,7 +197,7 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
         v = qz * o->pv.z;
     } else {
         int64_t qy = (int64_t)r->o.y - o->a.y +
-                     (((int64_t)tt * r->d.y + 0x8000) >> 16);
+                     (((int64_t)tt * r->d.y + UHALF) >> FX_UBITS);
         if (qx == (int32_t)qx && qy == (int32_t)qy && qz == (int32_t)qz) {
             /* The usual case: 32-bit operands, the same sums. */
             const int32_t x = (int32_t)qx, y = (int32_t)qy;
@@ -214,6 +226,31 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
     return 1;
 }
 
+/* 1 / d for a unit component d != 0, to 32 bits whatever its size:
+ * 1 / |d| = m 2^c / 2^63 for d normalised by c leading zeros. */
+typedef struct {
+    uint32_t m;
+    int sh;  /* x / d in Q16.16 is (x m) >> sh, sh >= 2 */
+    int neg; /* d < 0 */
+} slab_inv;
+
+static void slab_inv_set(slab_inv *v, int32_t d)
+{
+    uint32_t ud = (uint32_t)(d < 0 ? -(int64_t)d : d);
+    int c = fx_clz32(ud);
+    /* (2^63 - 1) / (ud 2^c) is below 2^32 as ud 2^c >= 2^31. */
+    v->m = fx_udiv64_32(((uint64_t)1 << 63) - 1u, ud << c);
+    v->sh = 63 - FX_UBITS - c;
+    v->neg = d < 0;
+}
+
+/* x / d (Q16.16 x), within 2^-31 relative; saturates. |x m| < 2^63. */
+static fx_t slab_t(const slab_inv *v, fx_t x)
+{
+    int64_t q = ((int64_t)x * v->m) >> v->sh;
+    return fx_sat64(v->neg ? -q : q);
+}
+
 static int hit_box(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                    fx_t *t, uint8_t *part)
 {
@@ -222,23 +259,21 @@ static int hit_box(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
     const fx_t lo[3] = { o->a.x, o->a.y, o->a.z };
     const fx_t hi[3] = { o->b.x, o->b.y, o->b.z };
     const fx_t org[3] = { r->o.x, r->o.y, r->o.z };
-    /* 1/d only for rays that reach a box's bounding sphere. */
-    const fx_t inv[3] = { fx_recip(r->d.x), fx_recip(r->d.y),
-                          fx_recip(r->d.z) };
+    const int32_t dir[3] = { r->d.x, r->d.y, r->d.z };
     fx_t tn = FX_MIN, tf = FX_MAX;
     int an = 0, af = 0;
     for (int i = 0; i < 3; i++) {
-        if (inv[i] == FX_MAX || inv[i] == FX_MIN) {
-            /* |d_i| <= 2 ulps, so 1/d_i saturated: (b - o) * inv would
-             * put a face as near as 0.5 units for |b - o| of one ulp.
-             * The ray is parallel to this slab: outside it, a miss;
-             * inside it (both faces inclusive) no constraint on t. */
+        if (dir[i] == 0) {
+            /* Parallel to this slab: outside it, a miss; inside it (both
+             * faces inclusive) no constraint on t. */
             if (org[i] < lo[i] || org[i] > hi[i])
                 return 0;
             continue;
         }
-        fx_t t1 = fx_mul(fx_sub(lo[i], org[i]), inv[i]);
-        fx_t t2 = fx_mul(fx_sub(hi[i], org[i]), inv[i]);
+        slab_inv inv;
+        slab_inv_set(&inv, dir[i]);
+        fx_t t1 = slab_t(&inv, fx_sub(lo[i], org[i]));
+        fx_t t2 = slab_t(&inv, fx_sub(hi[i], org[i]));
         if (t1 > t2) {
             fx_t tmp = t1;
             t1 = t2;
@@ -259,7 +294,6 @@ static int hit_box(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
      * distance is then taken as hit_quad takes it for an axis-aligned
      * plane, so a face lying in a floor quad's plane ties with it exactly
      * (the earlier object wins, without z-fighting). */
-    const fx_t dir[3] = { r->d.x, r->d.y, r->d.z };
     if (tn > tmin && tn < tmax) {
         int64_t tw = dir[an] == 0 ? tn
                      : plane_t(dir[an] > 0 ? lo[an] : hi[an], org[an],
@@ -350,7 +384,10 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
     /* Closest point on the ray, relative to the centre, in the frame. */
     fx_t px = to_frame(-h[0], k), py = to_frame(-h[1], k);
     fx_t pz = to_frame(-h[2], k);
-    fx_t dx = r->d.x, dy = r->d.y, dz = r->d.z;
+    /* The frame's quadratic works in Q16.16: the direction rounded to it
+     * (the closest point above already used all of its bits). */
+    fx_t dx = fx_u_to_fx(r->d.x), dy = fx_u_to_fx(r->d.y);
+    fx_t dz = fx_u_to_fx(r->d.z);
     fx_t ur = o->ur, uh = o->uh;
 
     /* Side: x^2 + z^2 = R(y)^2, R = ur (cylinder) or k (uh - y) (cone). */
@@ -394,7 +431,7 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
         }
     }
     /* Caps: discs at y = -uh (bottom) and y = +uh (top, cylinder only). */
-    if (dy != 0) {
+    if (r->d.y != 0) {
         for (int cap = 0; cap < 2; cap++) {
             if (!(o->caps & (cap ? RT_CAP_TOP : RT_CAP_BOTTOM)))
                 continue;
@@ -403,7 +440,7 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
              * on the floor) gives the very same t, so the tie goes to the
              * earlier object instead of flipping with rounding. */
             int64_t cy = cap ? 2 * (int64_t)o->bc.y - o->a.y : o->a.y;
-            int64_t tw = plane_t(cy, r->o.y, dy);
+            int64_t tw = plane_t(cy, r->o.y, r->d.y);
             if (tw <= tmin || tw >= best)
                 continue; /* take() would refuse it; keeps tw - tca small */
             fx_t tl = to_frame(tw - tca, k);
@@ -459,36 +496,36 @@ int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
     return 0;
 }
 
-fx_vec3 rt_normal(const rt_object *o, fx_vec3 p, uint8_t part)
+fx_dir3 rt_normal(const rt_object *o, fx_vec3 p, uint8_t part)
 {
     switch (o->kind) {
     case RT_SPHERE:
-        return fx_v3_normalize(fx_v3_sub(p, o->a));
+        return fx_d3_normalize(fx_v3_sub(p, o->a));
     case RT_QUAD:
         return o->n;
     case RT_BOX: {
         /* part is the axis of the face; its side is the one p lies on. */
         const fx_t pc[3] = { p.x, p.y, p.z };
         const fx_t cc[3] = { o->bc.x, o->bc.y, o->bc.z };
-        fx_t v[3] = { 0, 0, 0 };
-        v[part] = pc[part] > cc[part] ? FX_ONE : -FX_ONE;
-        return fx_v3(v[0], v[1], v[2]);
+        int32_t v[3] = { 0, 0, 0 };
+        v[part] = pc[part] > cc[part] ? FX_UONE : -FX_UONE;
+        return fx_d3(v[0], v[1], v[2]);
     }
     default: {
         if (part == 1)
-            return fx_v3(0, -FX_ONE, 0);
+            return fx_d3(0, -FX_UONE, 0);
         if (part == 2)
-            return fx_v3(0, FX_ONE, 0);
+            return fx_d3(0, FX_UONE, 0);
         fx_t x = fx_sub(p.x, o->a.x), z = fx_sub(p.z, o->a.z);
         fx_t y = 0;
         if (o->kind == RT_CONE) {
             fx_t rho = (fx_t)fx_sqrt_q32((uint64_t)((int64_t)x * x) +
                                          (uint64_t)((int64_t)z * z));
             if (rho == 0)
-                return fx_v3(0, FX_ONE, 0); /* apex */
+                return fx_d3(0, FX_UONE, 0); /* apex */
             y = fx_mul(o->k, rho);
         }
-        return fx_v3_normalize(fx_v3(x, y, z));
+        return fx_d3_normalize(fx_v3(x, y, z));
     }
     }
 }

@@ -12,37 +12,32 @@
  * docs/render-model.md and docs/numerics.md). */
 #define RT_EPS ((fx_t)128)
 
-/* |d.n| below this (Q32.32) counts as parallel: 2^-16. */
-#define RT_PAR_Q32 ((int64_t)1 << 16)
+/* |d.n| below this (2 FX_UBITS fraction bits, fx_d3_dot_raw) counts as
+ * parallel: 2^-16. */
+#define RT_PAR_DOT ((int64_t)1 << (2 * FX_UBITS - 16))
 
 /* An object index meaning "none" (nothing skipped, no known origin). */
 #define RT_NO_OBJECT 0xFFFFu
 
 typedef struct {
     fx_vec3 o;     /* origin */
-    fx_vec3 d;     /* unit direction */
-    int32_t e;     /* rt_unit_err(d): |d|^2 - 1 in Q32.32 */
+    fx_dir3 d;     /* unit direction */
+    int32_t e;     /* fx_d3_unit_err(d): |d|^2 - 1 in Q32.32 */
     uint8_t small; /* fx_v3_small(o): the 32-bit intersection paths apply */
 } rt_ray;
 
-/* |d|^2 - 1 of a unit direction, in Q32.32 (rounding leaves |d| a little
- * off 1; the bounding-sphere test corrects for it). Each component is
- * within an ulp, so |e| is far below 2^18. The closest approach is
- * (oc.d) / |d|^2, not oc.d: without the factor its error is e |oc| (half a
- * unit for a sphere 30000 units away); with t (1 - e) it is e^2 |oc|. */
-static inline int32_t rt_unit_err(fx_vec3 d)
-{
-    return (int32_t)((int64_t)d.x * d.x + (int64_t)d.y * d.y +
-                     (int64_t)d.z * d.z - ((int64_t)1 << 32));
-}
+/* Rounding leaves |d| a little off 1, by e = fx_d3_unit_err(d) (far
+ * below 2^-28 for 30 fraction bits). The closest approach is
+ * (oc.d) / |d|^2, not oc.d: without the factor its error is e |oc|; with
+ * t (1 - e) it is e^2 |oc|. The bounding-sphere test applies it. */
 
 /* Sets a ray's origin and unit direction, and the two values its tests
- * derive from them (rt_unit_err, fx_v3_small). */
-static inline void rt_ray_set(rt_ray *r, fx_vec3 o, fx_vec3 d)
+ * derive from them (fx_d3_unit_err, fx_v3_small). */
+static inline void rt_ray_set(rt_ray *r, fx_vec3 o, fx_dir3 d)
 {
     r->o = o;
     r->d = d;
-    r->e = rt_unit_err(d);
+    r->e = fx_d3_unit_err(d);
     r->small = (uint8_t)fx_v3_small(o);
 }
 
@@ -64,10 +59,10 @@ static inline fx_t rt_origin_offset(const rt_object *o)
 /* Moves the hit point *p off the surface by off along the unit normal ng
  * (towards the ray), once: rays leaving on the ray's side start there,
  * and many hits cast none. |off| <= 2^17. */
-static inline void rt_out_point(fx_vec3 *p, int *done, fx_vec3 ng, fx_t off)
+static inline void rt_out_point(fx_vec3 *p, int *done, fx_dir3 ng, fx_t off)
 {
     if (!*done) {
-        *p = fx_v3_madd_unit(*p, ng, off);
+        *p = fx_v3_madd_d(*p, ng, off);
         *done = 1;
     }
 }

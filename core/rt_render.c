@@ -106,7 +106,7 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
     rt_work wk;
     rt_work_init(&wk, stats);
     rt_cam_frame cf;
-    rt_cam_setup(&cf, s, o->height, n);
+    rt_cam_setup(&cf, s, o->width, o->height, n);
     if (RT_HAS_SUPERSAMPLING && o->adaptive && n > 1)
         return rt_aa_adaptive(&tr, &wk, &cf, o, y0, y1, row_buf, fn, ctx);
     for (int y = y0; y < y1; y++) {

@@ -85,16 +85,16 @@ static rt_status prepare_shape(rt_object *o)
         fx_vec3 e1 = o->b, e2 = o->c;
         if (is_zero(e1) || is_zero(e2))
             return RT_ERR_DEGENERATE;
-        o->n = fx_v3_cross_unit(e1, e2);
-        if (is_zero(o->n))
+        o->n = fx_d3_cross_unit(e1, e2);
+        if (o->n.x == 0 && o->n.y == 0 && o->n.z == 0)
             return RT_ERR_DEGENERATE; /* parallel edges */
-        o->pu = fx_v3_cross_unit(e2, o->n);
-        o->pv = fx_v3_cross_unit(o->n, e1);
+        o->pu = fx_v3_cross_unit(e2, fx_d3_raw(o->n));
+        o->pv = fx_v3_cross_unit(fx_d3_raw(o->n), e1);
         o->lu = fx_v3_dot(e1, o->pu);
         o->lv = fx_v3_dot(e2, o->pv);
         if (o->lu <= 0 || o->lv <= 0)
             return RT_ERR_DEGENERATE;
-        o->dist = fx_v3_dot(o->n, o->a);
+        o->dist = fx_pd_dot(o->a, o->n);
         if (o->n.x == 0 && o->n.z == 0 && o->pu.y == 0 && o->pv.y == 0) {
             if (o->pu.x == 0 && o->pv.z == 0)
                 o->flat = 1; /* pu along z, pv along x */

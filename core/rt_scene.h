@@ -13,7 +13,7 @@
 
 #include <stdint.h>
 #include "rt_config.h"
-#include "fx_vec.h"
+#include "fx_dir.h"
 #include "rt_features.h"
 
 /* ---- Configuration check -------------------------------------------------
@@ -111,7 +111,7 @@ typedef struct {
     fx_t r;           /* sphere, cylinder, cone: radius */
     fx_t h;           /* cylinder, cone: height */
     /* Derived by rt_object_prepare(). */
-    fx_vec3 n;        /* quad: unit normal, norm(edge1 x edge2) */
+    fx_dir3 n;        /* quad: unit normal, norm(edge1 x edge2) */
     fx_vec3 pu, pv;   /* quad: unit in-plane axes across edge2 and edge1 */
     fx_t lu, lv;      /* quad: 0 <= (p - a).pu <= lu, 0 <= (p - a).pv <= lv */
     fx_t dist;        /* quad: n . a */

@@ -26,21 +26,20 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     const rt_scene *s = tr->scene;
     const rt_object *o = &s->obj[oi];
     const rt_material *m = &s->mat[o->material];
-    /* d is a unit vector: below 16384 units the cheaper form is exact. */
-    fx_vec3 p = t <= ((fx_t)1 << 30) ? fx_v3_madd_unit(r->o, r->d, t)
-                                     : fx_v3_madd(r->o, r->d, t);
-    const fx_vec3 ng_out = rt_normal(o, p, part);
-    fx_vec3 ng = ng_out;
-    int outside = o->kind == RT_QUAD || fx_v3_dot_q32(r->d, ng) <= 0;
-    if (fx_v3_dot_q32(r->d, ng) > 0)
-        ng = fx_v3_neg(ng); /* face the ray */
-    fx_vec3 n = ng;
+    const fx_vec3 p = fx_v3_madd_d(r->o, r->d, t);
+    const fx_dir3 ng_out = rt_normal(o, p, part);
+    fx_dir3 ng = ng_out;
+    const int64_t dn = fx_d3_dot_raw(r->d, ng);
+    int outside = o->kind == RT_QUAD || dn <= 0;
+    if (dn > 0)
+        ng = fx_d3_neg(ng); /* face the ray */
+    fx_dir3 n = ng;
     if (RT_HAS_BUMP && m->bump != 0)
         n = rt_bump(m, o, p, ng);
     unsigned tex = 0; /* which colour: m->color, or color2 */
     /* The texture is read just inside the surface: see render-model.md. */
     if (RT_HAS_TEXTURES && m->texture != RT_TEX_NONE)
-        tex = rt_texel(m, o, fx_v3_madd_unit(p, ng_out, -RT_EPS));
+        tex = rt_texel(m, o, fx_v3_madd_d(p, ng_out, -RT_EPS));
     const rt_rgb base = tex ? m->color2 : m->color;
     /* Where rays leaving on the ray's side start: made on first use. */
     const fx_t off = rt_origin_offset(o);
@@ -57,8 +56,8 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     for (unsigned li = 0; !dark && li < n_lights; li++) {
         const rt_light *l = &s->light[li];
         fx_vec3 lv = fx_v3_sub(l->pos, p);
-        fx_vec3 ld = fx_v3_normalize(lv);
-        fx_t ndl = fx_v3_dotn(n, ld);
+        fx_dir3 ld = fx_d3_normalize(lv);
+        fx_t ndl = fx_d3_dot(n, ld);
         if (ndl <= 0)
             continue;
         if (RT_HAS_SHADOWS && (tr->feat & RT_FEAT_SHADOWS) &&
@@ -70,7 +69,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
         rt_rgb_madd(&c, lc, fx_mul(kdl, ndl)); /* Lambert */
         fx_t ks;
         if (RT_HAS_SPECULAR && m->specular > 0 &&
-            rt_highlight(m, n, ld, ndl, r->d, tr->spec_min[o->material], &ks))
+            rt_highlight(m, n, ld, r->d, tr->spec_min[o->material], &ks))
             rt_rgb_madd(&c, l->color, ks); /* Phong */
     }
     if (depth >= tr->max_depth)
@@ -91,7 +90,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
         fx_t wt = rt_child_weight(w, m->transparency);
         if (m->transparency > 0 && rt_worth_tracing(tr, wk, wt, depth + 1)) {
             fx_t eta = outside ? m->ior_inv : m->ior;
-            fx_vec3 td;
+            fx_dir3 td;
             rt_ray tr2;
             if (!rt_refract_dir(r->d, n, eta, &td)) {
                 /* total internal reflection */
@@ -106,7 +105,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
                     (o->convex && (!outside || o->kind == RT_QUAD))
                         ? oi
                         : RT_NO_OBJECT;
-                rt_ray_set(&tr2, fx_v3_madd_unit(p, ng, -off), td);
+                rt_ray_set(&tr2, fx_v3_madd_d(p, ng, -off), td);
                 RT_COUNT(wk, refraction);
                 rt_rgb_madd(&c,
                             trace(tr, wk, &tr2, depth + 1, wt, skip_in, oi),

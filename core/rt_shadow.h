@@ -75,8 +75,8 @@ static inline int rt_occluded(const rt_tracer *tr, rt_work *wk,
  * (made on first use, rt_out_point) along unit ld, to the light at lv
  * from the hit, ignoring object skip. */
 static inline int rt_in_shadow(const rt_tracer *tr, rt_work *wk, unsigned li,
-                               fx_vec3 lv, fx_vec3 ld, fx_vec3 *p_out,
-                               int *have_out, fx_vec3 ng, fx_t off,
+                               fx_vec3 lv, fx_dir3 ld, fx_vec3 *p_out,
+                               int *have_out, fx_dir3 ng, fx_t off,
                                unsigned skip)
 {
     const uint32_t *cand = 0; /* every object */
@@ -89,10 +89,10 @@ static inline int rt_in_shadow(const rt_tracer *tr, rt_work *wk, unsigned li,
     rt_ray sr;
     rt_out_point(p_out, have_out, ng, off);
     rt_ray_set(&sr, *p_out, ld);
-    /* |lv| = lv . norm(lv): a bounded dot product instead of a second
-     * square root; its error (~1e-5 |lv|) only moves the far end of the
-     * shadow ray, by far less than RT_EPS. */
-    return rt_occluded(tr, wk, &sr, fx_sub(fx_v3_dotn(lv, ld), RT_EPS), skip,
+    /* |lv| = lv . norm(lv): a dot product instead of a second square
+     * root; its error (a few 2^-FX_UBITS of |lv|) only moves the far end
+     * of the shadow ray, by far less than RT_EPS. */
+    return rt_occluded(tr, wk, &sr, fx_sub(fx_pd_dot(lv, ld), RT_EPS), skip,
                        li, cand);
 }
 

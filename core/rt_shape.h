@@ -12,6 +12,6 @@ int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                  fx_t *t, uint8_t *part);
 
 /* Outward unit normal of o at surface point p on the given part. */
-fx_vec3 rt_normal(const rt_object *o, fx_vec3 p, uint8_t part);
+fx_dir3 rt_normal(const rt_object *o, fx_vec3 p, uint8_t part);
 
 #endif /* RT_SHAPE_H */

@@ -6,14 +6,22 @@
 #include "rt_scene.h"
 
 /* The highlight's weight ks (R.v)^n for unit normal n, unit direction ld
- * to the light with ndl = n.ld > 0, and unit ray direction d: 1 and *k
- * when R.v is above rv_min (rt_specular_min), else 0 (it would add 0). */
-static inline int rt_highlight(const rt_material *m, fx_vec3 n, fx_vec3 ld,
-                               fx_t ndl, fx_vec3 d, fx_t rv_min, fx_t *k)
+ * to the light (n.ld > 0), and unit ray direction d: 1 and *k when R.v is
+ * above rv_min (rt_specular_min), else 0 (it would add 0). */
+static inline int rt_highlight(const rt_material *m, fx_dir3 n, fx_dir3 ld,
+                               fx_dir3 d, fx_t rv_min, fx_t *k)
 {
-    /* R = 2 (n.l) n - l; rv = R.v with v = -d. */
-    fx_vec3 rl = fx_v3_madd_unit(fx_v3_neg(ld), n, 2 * ndl);
-    fx_t rv = fx_neg(fx_v3_dotn(rl, d));
+    /* R = 2 (n.l) n - l; rv = R.v with v = -d, so
+     * rv = (n.l)(-2 n.d) + l.d: two exact dot products. */
+    int64_t nl = fx_d3_dot_raw(n, ld), nd = fx_d3_dot_raw(n, d);
+    int64_t ld_d = fx_d3_dot_raw(ld, d);
+    /* The product nl nd has 4 FX_UBITS fraction bits: take each to
+     * FX_UBITS first (both below 1). */
+    int64_t nl_u = (nl + ((int64_t)1 << (FX_UBITS - 1))) >> FX_UBITS;
+    int64_t nd_u = (nd + ((int64_t)1 << (FX_UBITS - 1))) >> FX_UBITS;
+    int64_t rv2 = ld_d - 2 * nl_u * nd_u; /* 2 FX_UBITS fraction bits */
+    fx_t rv = (fx_t)((rv2 + ((int64_t)1 << (2 * FX_UBITS - 17))) >>
+                     (2 * FX_UBITS - 16));
     if (rv <= rv_min)
         return 0;
     *k = fx_mul(m->specular, fx_powi(rv, m->shininess));

@@ -78,8 +78,8 @@ static fx_t noise(uint32_t seed, const uint32_t i[3], const fx_t s[3])
     return lerp(zv[0], zv[1], s[2]);
 }
 
-fx_vec3 rt_bump(const rt_material *m, const rt_object *o, fx_vec3 p,
-                fx_vec3 n)
+fx_dir3 rt_bump(const rt_material *m, const rt_object *o, fx_vec3 p,
+                fx_dir3 n)
 {
     /* Lattice cell i = floor((p - a) / size), exact, and the fraction
      * within it, rem / size, rounded down (rem < size, so rem rcp fits 64
@@ -93,6 +93,12 @@ fx_vec3 rt_bump(const rt_material *m, const rt_object *o, fx_vec3 p,
                                       m->bump_scale, m->bump_rcp, &rem);
         s[k] = smooth((fx_t)(((uint64_t)(uint32_t)rem * m->bump_rcp) >> 16));
     }
-    fx_vec3 g = fx_v3(noise(1, i, s), noise(2, i, s), noise(3, i, s));
-    return fx_v3_normalize(fx_v3_madd(n, g, m->bump));
+    /* norm(n + bump g), with FX_UBITS fraction bits: g bump is Q32.32
+     * (|g| <= 1, |bump| < 2^31: below 2^47). */
+    const fx_t g[3] = { noise(1, i, s), noise(2, i, s), noise(3, i, s) };
+    const int sh = 32 - FX_UBITS;
+    return fx_d3_normalize64(
+        (int64_t)n.x + (((int64_t)g[0] * m->bump) >> sh),
+        (int64_t)n.y + (((int64_t)g[1] * m->bump) >> sh),
+        (int64_t)n.z + (((int64_t)g[2] * m->bump) >> sh));
 }

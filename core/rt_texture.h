@@ -10,7 +10,7 @@
 unsigned rt_texel(const rt_material *m, const rt_object *o, fx_vec3 p);
 
 /* Bump-perturbed unit normal (m->bump != 0). */
-fx_vec3 rt_bump(const rt_material *m, const rt_object *o, fx_vec3 p,
-                fx_vec3 n);
+fx_dir3 rt_bump(const rt_material *m, const rt_object *o, fx_vec3 p,
+                fx_dir3 n);
 
 #endif /* RT_TEXTURE_H */

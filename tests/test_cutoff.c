@@ -173,7 +173,7 @@ static long bound_trial(long *rays, long *over, long *mats)
         fx_vec3 aim = fx_v3(unit(uni(-5, 5)), unit(uni(-2, 4)),
                             unit(uni(-3, 6)));
         rt_ray r;
-        rt_ray_set(&r, o, fx_v3_normalize(fx_v3_sub(aim, o)));
+        rt_ray_set(&r, o, fx_d3_normalize(fx_v3_sub(aim, o)));
         rt_rgb c =
             rt_trace(&tr, &wk, &r, d, FX_ONE, RT_NO_OBJECT, RT_NO_OBJECT);
         fx_t top = c.r > c.g ? (c.r > c.b ? c.r : c.b)

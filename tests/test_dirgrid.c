@@ -104,7 +104,7 @@ static void check_ray(const rt_scene *s, const rt_ray *r, fx_t tmax,
     }
 }
 
-static rt_ray make_ray(fx_vec3 o, fx_vec3 d)
+static rt_ray make_ray(fx_vec3 o, fx_dir3 d)
 {
     rt_ray r;
     rt_ray_set(&r, o, d);
@@ -132,13 +132,15 @@ static void shadow_trial(double spread, long *hits, long *missing)
         fx_vec3 p = fx_v3_add(
             lp, fx_v3_scale(fx_v3_sub(q, lp), D2F(uni(1.0, 3.0))));
         fx_vec3 lv = fx_v3_sub(lp, p);
-        fx_vec3 ld = fx_v3_normalize(lv);
+        fx_dir3 ld = fx_d3_normalize(lv);
         /* Origin offset as shade() gives it: EPS along some normal. */
-        fx_vec3 n = fx_v3_normalize(v3(uni(-1, 1), uni(-1, 1), uni(-1, 1)));
-        rt_ray sr = make_ray(fx_v3_madd(p, n, RT_EPS), ld);
-        fx_t tmax = fx_sub(fx_v3_dotn(lv, ld), RT_EPS);
+        fx_dir3 n = fx_d3_normalize(v3(uni(-1, 1), uni(-1, 1), uni(-1, 1)));
+        rt_ray sr = make_ray(fx_v3_madd_d(p, n, RT_EPS), ld);
+        fx_t tmax = fx_sub(fx_pd_dot(lv, ld), RT_EPS);
         check_ray(&s, &sr, tmax,
-                  rt_dir_cell(&g, -ld.x, -ld.y, -ld.z, 1), hits, missing);
+                  rt_dir_cell(&g, fx_u_to_fx(-ld.x), fx_u_to_fx(-ld.y),
+                              fx_u_to_fx(-ld.z), 1),
+                  hits, missing);
     }
 }
 
@@ -157,13 +159,15 @@ static void leaving_trial(double spread, long *hits, long *missing)
         fx_vec3 o = graze_point(from->bc, from->bc, from->br);
         o = fx_v3_add(from->bc,
                       fx_v3_scale(fx_v3_sub(o, from->bc), D2F(uni(0, 1))));
-        fx_vec3 n = fx_v3_normalize(v3(uni(-1, 1), uni(-1, 1), uni(-1, 1)));
-        o = fx_v3_madd(o, n, RT_EPS);
+        fx_dir3 n = fx_d3_normalize(v3(uni(-1, 1), uni(-1, 1), uni(-1, 1)));
+        o = fx_v3_madd_d(o, n, RT_EPS);
         fx_vec3 aim = graze_point(o, b->bc, b->br);
-        fx_vec3 d = fx_v3_normalize(fx_v3_sub(aim, o));
+        fx_dir3 d = fx_d3_normalize(fx_v3_sub(aim, o));
         rt_ray r = make_ray(o, d);
-        check_ray(&s, &r, FX_MAX, rt_dir_cell(&g, d.x, d.y, d.z, 1), hits,
-                  missing);
+        check_ray(&s, &r, FX_MAX,
+                  rt_dir_cell(&g, fx_u_to_fx(d.x), fx_u_to_fx(d.y),
+                              fx_u_to_fx(d.z), 1),
+                  hits, missing);
     }
 }
 

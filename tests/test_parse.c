@@ -462,7 +462,7 @@ static void test_full_scene(void)
     CHECK_EQ(o->material, 3);
     CHECK_EQ(o->b.x, FX_INT(40));
     CHECK_EQ(o->c.z, FX_INT(40));
-    CHECK_EQ(o->n.y, -FX_ONE); /* edge1 x edge2 = (40,0,0) x (0,0,40) */
+    CHECK_EQ(o->n.y, -FX_UONE); /* edge1 x edge2 = (40,0,0) x (0,0,40) */
     o = &S.obj[2];
     CHECK_EQ(o->kind, RT_BOX);
     CHECK_EQ(o->a.x, -FX_ONE);

@@ -14,6 +14,7 @@
 
 #define D2F(x) ((fx_t)lround((x) * 65536.0))
 #define F2D(x) ((double)(x) / 65536.0)
+#define U2D(x) ((double)(x) / (double)FX_UONE) /* unit components */
 
 static rt_object make(int kind, double ax, double ay, double az, double r,
                       double h)
@@ -34,8 +35,10 @@ static rt_ray ray(double ox, double oy, double oz, double dx, double dy,
     rt_ray r;
     double l = sqrt(dx * dx + dy * dy + dz * dz);
     r.o = fx_v3(D2F(ox), D2F(oy), D2F(oz));
-    r.d = fx_v3(D2F(dx / l), D2F(dy / l), D2F(dz / l));
-    r.e = rt_unit_err(r.d);
+    r.d = fx_d3((int32_t)lround(dx / l * FX_UONE),
+                (int32_t)lround(dy / l * FX_UONE),
+                (int32_t)lround(dz / l * FX_UONE));
+    r.e = fx_d3_unit_err(r.d);
     r.small = (uint8_t)fx_v3_small(r.o);
     return r;
 }
@@ -53,13 +56,13 @@ static void expect_hit(const rt_object *o, rt_ray r, double t_want,
     if (!th_check(fabs(F2D(t) - t_want) <= tol, __FILE__, line,
                   "hit distance"))
         printf("    t = %.6f, want %.6f\n", F2D(t), t_want);
-    fx_vec3 p = fx_v3_madd(r.o, r.d, t);
-    fx_vec3 n = rt_normal(o, p, part);
-    double err = fabs(F2D(n.x) - nx) + fabs(F2D(n.y) - ny) +
-                 fabs(F2D(n.z) - nz);
+    fx_vec3 p = fx_v3_madd_d(r.o, r.d, t);
+    fx_dir3 n = rt_normal(o, p, part);
+    double err = fabs(U2D(n.x) - nx) + fabs(U2D(n.y) - ny) +
+                 fabs(U2D(n.z) - nz);
     if (!th_check(err < 1e-3, __FILE__, line, "normal"))
         printf("    n = (%.4f %.4f %.4f), want (%.4f %.4f %.4f)\n",
-               F2D(n.x), F2D(n.y), F2D(n.z), nx, ny, nz);
+               U2D(n.x), U2D(n.y), U2D(n.z), nx, ny, nz);
 }
 
 static void expect_miss(const rt_object *o, rt_ray r, int line)
@@ -105,8 +108,9 @@ static void quad_cases(void)
     MISS(q, ray(1.5, 3, 0, 0, -1, 0));              /* beside */
     MISS(q, ray(0, 3, 0, 0, 1, 0));                 /* behind */
     MISS(q, ray(-5, 0, 0, 1, 0, 0));                /* in the plane */
-    HIT(q, ray(-5, 0.01, 0, 1, -0.002, 0), 5.0 * sqrt(1 + 0.002 * 0.002),
-        0, 1, 0);                                  /* grazing */
+    /* grazing: t = y / sin, from the origin's Q16.16 height */
+    HIT(q, ray(-5, 0.01, 0, 1, -0.002, 0),
+        F2D(D2F(0.01)) / 0.002 * sqrt(1 + 0.002 * 0.002), 0, 1, 0);
     rt_object bad = make(RT_QUAD, 0, 0, 0, 0, 0);
     bad.b = fx_v3(FX_ONE, 0, 0);
     bad.c = fx_v3(2 * FX_ONE, 0, 0);
@@ -199,8 +203,8 @@ static void random_spheres(void)
         }
         if (hit) {
             /* The hit point lies on the surface, on the near side. */
-            double px = F2D(ry.o.x) + F2D(t) * F2D(ry.d.x) - ccx;
-            double pz = F2D(ry.o.z) + F2D(t) * F2D(ry.d.z) - ccz;
+            double px = F2D(ry.o.x) + F2D(t) * U2D(ry.d.x) - ccx;
+            double pz = F2D(ry.o.z) + F2D(t) * U2D(ry.d.z) - ccz;
             double off = sqrt(px * px + pz * pz) - rr;
             /* Far side when starting inside, or when the near root lies
              * below t_min. */

@@ -25,25 +25,15 @@
  * belongs here, and in FW_HOST_DEFS of mk/firmware.mk. */
 static void put_settings_guard(FILE *f)
 {
-#ifdef RT_ACCURACY
-    const char *acc = "RT_ACCURACY != ";
-    int acc_v = RT_ACCURACY;
-#else
-    const char *acc = "";
-    int acc_v = 0;
-#endif
     fprintf(f, "/* The values below depend on these settings "
                "(rt_config.h). */\n");
-    if (*acc)
-        fprintf(f, "#if %s%d || RT_MAX_DEPTH != %d\n", acc, acc_v,
-                (int)RT_MAX_DEPTH);
-    else
-        fprintf(f, "#if RT_MAX_DEPTH != %d\n", (int)RT_MAX_DEPTH);
-    fprintf(f, "#error \"generated for ");
-    if (*acc)
-        fprintf(f, "RT_ACCURACY %d and ", acc_v);
-    fprintf(f, "RT_MAX_DEPTH %d: regenerate it with a fixtrace built with "
-               "this build's values\"\n#endif\n", (int)RT_MAX_DEPTH);
+    fprintf(f, "#if RT_ACCURACY != %d || RT_UNIT_BITS != %d || "
+               "RT_MAX_DEPTH != %d\n",
+            (int)RT_ACCURACY, (int)RT_UNIT_BITS, (int)RT_MAX_DEPTH);
+    fprintf(f, "#error \"generated for RT_ACCURACY %d, RT_UNIT_BITS %d and "
+               "RT_MAX_DEPTH %d: regenerate it with a fixtrace built with "
+               "this build's values\"\n#endif\n",
+            (int)RT_ACCURACY, (int)RT_UNIT_BITS, (int)RT_MAX_DEPTH);
 }
 
 typedef struct {
@@ -157,7 +147,7 @@ static void put_object(emitter *e, const rt_object *o)
     put_fx(e, "r", o->r);
     put_fx(e, "h", o->h);
     put(e, "/* Derived by rt_object_prepare(). */");
-    put_vec(e, "n", o->n);
+    put_vec(e, "n", fx_d3_raw(o->n)); /* FX_UBITS fraction bits */
     put_vec(e, "pu", o->pu);
     put_vec(e, "pv", o->pv);
     put_fx(e, "lu", o->lu);

@@ -80,20 +80,23 @@ void case_grazing_quad_dn_1ulp(void)
 void case_plane_parallel_few_ulps(void)
 {
     rt_object q = quad(V(-50, -40, -30), V(100, 0, 0), V(0, -80, 60));
-    fx_vec3 n = q.n;
-    /* A direction in the plane: n x (1, 0, 0), then tilted by k ulps. */
-    fx_vec3 in = fx_v3_cross_unit(n, fx_v3(FX_ONE, 0, 0));
+    fx_dir3 n = q.n;
+    /* A direction in the plane: n x (1, 0, 0), then tilted by k ulps of
+     * Q16.16 (the PAR threshold is 2^-16). */
+    fx_dir3 in = fx_d3_cross_unit(fx_d3_raw(n), fx_v3(FX_ONE, 0, 0));
+    const int32_t ulp = (int32_t)1 << FX_USHIFT;
     for (int k = -6; k <= 6; k++) {
-        fx_vec3 d = fx_v3(in.x, in.y + k, in.z);
-        rt_ray r = ray_raw(V(0, 0.001, 0.0), d);
-        int64_t dn = fx_v3_dot_q32(d, n);
+        fx_dir3 d = fx_d3(in.x, in.y + k * ulp, in.z);
+        rt_ray r;
+        rt_ray_set(&r, V(0, 0.001, 0.0), d);
+        int64_t dn = fx_d3_dot_raw(d, n);
         double t, tr;
         int h = cast(&q, &r, &t, NULL), hr = cast_ref(&q, &r, &tr, NULL);
-        if (llabs(llabs(dn) - RT_PAR_Q32) <= 65536)
+        if (llabs(llabs(dn) - RT_PAR_DOT) <= RT_PAR_DOT)
             continue; /* on the PAR boundary: either answer */
         if (!CHECK(h == hr))
-            printf("    k = %d, d.n = %lld/2^32: core %d, reference %d\n", k,
-                   (long long)dn, h, hr);
+            printf("    k = %d, d.n = %g: core %d, reference %d\n", k,
+                   (double)dn / 4.0 / (double)((int64_t)1 << (2 * FX_UBITS - 2)), h, hr);
         else if (h && !CHECK(fabs(t - tr) <= tr / 1024))
             printf("    k = %d: t %.4f, reference %.4f\n", k, t, tr);
     }
@@ -525,7 +528,7 @@ static int seam_cracks(const rt_object *q1, const rt_object *q2,
         rt_ray r = ray(px - dist * dx / l, py - dist * dy / l,
                        pz - dist * dz / l, dx, dy, dz);
         double t;
-        if (fabs(F2D(fx_v3_dotn(r.d, q1->n))) < 0.05)
+        if (fabs(F2D(fx_d3_dot(r.d, q1->n))) < 0.05)
             continue; /* too grazing for the plane to matter */
         (*n)++;
         if (cast(q1, &r, &t, NULL) || cast(q2, &r, &t, NULL))

@@ -353,20 +353,33 @@ fx_vec3 V(double x, double y, double z)
     return fx_v3(D2F(x), D2F(y), D2F(z));
 }
 
-/* A ray with raw origin and direction (the direction is used as given). */
+/* A Q16.16 direction as a unit vector, exactly (its low bits zero). */
+fx_dir3 dir16(fx_vec3 d)
+{
+    const int32_t m = (int32_t)1 << FX_USHIFT;
+    return fx_d3(d.x * m, d.y * m, d.z * m);
+}
+
+/* A ray with raw origin and a Q16.16 direction, used as given. */
 rt_ray ray_raw(fx_vec3 o, fx_vec3 d)
 {
     rt_ray r;
-    rt_ray_set(&r, o, d);
+    rt_ray_set(&r, o, dir16(d));
     return r;
 }
 
-/* A ray from a double origin along the normalised double direction. */
+/* A ray from a double origin along the normalised double direction,
+ * rounded to the unit vectors' precision. */
 rt_ray ray(double ox, double oy, double oz, double dx, double dy,
                   double dz)
 {
     double l = sqrt(dx * dx + dy * dy + dz * dz);
-    return ray_raw(V(ox, oy, oz), V(dx / l, dy / l, dz / l));
+    rt_ray r;
+    rt_ray_set(&r, V(ox, oy, oz),
+               fx_d3((int32_t)lround(dx / l * FX_UONE),
+                     (int32_t)lround(dy / l * FX_UONE),
+                     (int32_t)lround(dz / l * FX_UONE)));
+    return r;
 }
 
 /* The core's nearest hit with t_min = EPS, t_max unbounded: 1 and *t. */
@@ -388,7 +401,7 @@ int cast_ref(const rt_object *o, const rt_ray *r, double *t,
     ref_shape sh;
     ref_hit h;
     ref_vec3 ro = { F2D(r->o.x), F2D(r->o.y), F2D(r->o.z) };
-    ref_vec3 rd = { F2D(r->d.x), F2D(r->d.y), F2D(r->d.z) };
+    ref_vec3 rd = { U2D(r->d.x), U2D(r->d.y), U2D(r->d.z) };
     ref_shape_from_object(o, &sh);
     int hit = ref_intersect(&sh, ro, rd, HUGE_VAL, &h);
     *t = hit ? h.t : -1;
@@ -398,16 +411,16 @@ int cast_ref(const rt_object *o, const rt_ray *r, double *t,
 }
 
 /* Outward normal of the core at its own hit. */
-fx_vec3 normal_at(const rt_object *o, const rt_ray *r, double t,
+fx_dir3 normal_at(const rt_object *o, const rt_ray *r, double t,
                          uint8_t part)
 {
-    return rt_normal(o, fx_v3_madd(r->o, r->d, D2F(t)), part);
+    return rt_normal(o, fx_v3_madd_d(r->o, r->d, D2F(t)), part);
 }
 
 /* |n - (x, y, z)| summed per component, in units. */
-double nerr(fx_vec3 n, double x, double y, double z)
+double nerr(fx_dir3 n, double x, double y, double z)
 {
-    return fabs(F2D(n.x) - x) + fabs(F2D(n.y) - y) + fabs(F2D(n.z) - z);
+    return fabs(U2D(n.x) - x) + fabs(U2D(n.y) - y) + fabs(U2D(n.z) - z);
 }
 
 

@@ -30,6 +30,8 @@
 #define D2F(x) ((fx_t)lround((x) * 65536.0))
 
 #define F2D(x) ((double)(x) / 65536.0)
+/* A unit vector's component (FX_UBITS fraction bits) as a double. */
+#define U2D(x) ((double)(x) / (double)FX_UONE)
 
 /* A pixel differs when some channel is off by more than this (of 255). */
 #define LEVEL 64
@@ -116,14 +118,15 @@ rt_object box(double x0, double y0, double z0, double x1, double y1,
 rt_object quad(fx_vec3 a, fx_vec3 e1, fx_vec3 e2);
 fx_vec3 V(double x, double y, double z);
 rt_ray ray_raw(fx_vec3 o, fx_vec3 d);
+fx_dir3 dir16(fx_vec3 d);
 rt_ray ray(double ox, double oy, double oz, double dx, double dy,
                   double dz);
 int cast(const rt_object *o, const rt_ray *r, double *t, uint8_t *part);
 int cast_ref(const rt_object *o, const rt_ray *r, double *t,
                     ref_vec3 *n);
-fx_vec3 normal_at(const rt_object *o, const rt_ray *r, double t,
+fx_dir3 normal_at(const rt_object *o, const rt_ray *r, double t,
                          uint8_t part);
-double nerr(fx_vec3 n, double x, double y, double z);
+double nerr(fx_dir3 n, double x, double y, double z);
 int sweep(const rt_object *ob, fx_vec3 o, fx_vec3 step, fx_vec3 d,
                  int n, int k_sure, double tol);
 

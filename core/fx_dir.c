@@ -1,0 +1,69 @@
+/* SPDX-License-Identifier: MIT */
+/* fx_dir: building unit vectors (fx_dir.h). */
+#include "fx_dir.h"
+#include "fx_rsqrt.h"
+
+/* Unit vector along the 32-bit vector a, from its exact squared length. */
+static fx_dir3 norm32(int32_t ax, int32_t ay, int32_t az)
+{
+    uint64_t len2 = (uint64_t)((int64_t)ax * ax) +
+                    (uint64_t)((int64_t)ay * ay) +
+                    (uint64_t)((int64_t)az * az); /* <= 3 * 2^62 */
+    if (len2 == 0)
+        return fx_d3(0, 0, 0);
+    /* Along an axis the answer is exact: +-1 there, as box and quad
+     * normals and the planes they are tested against rely on. */
+    if ((ax == 0) + (ay == 0) + (az == 0) == 2)
+        return fx_d3(ax > 0 ? FX_UONE : (ax < 0 ? -FX_UONE : 0),
+                     ay > 0 ? FX_UONE : (ay < 0 ? -FX_UONE : 0),
+                     az > 0 ? FX_UONE : (az < 0 ? -FX_UONE : 0));
+    /* Scale |a|^2 by 4^j into X in [2^62, 2^64) and keep its top word m,
+     * in [2^30, 2^32). Then a_i / |a| = a_i 2^j / sqrt(X). */
+    int j = fx_clz64(len2) >> 1;
+    uint32_t m = (uint32_t)((len2 << (2 * j)) >> 32);
+    /* R ~ 2^46 / sqrt(m): low by at most about 2^-30 (fx_rsqrt_q30). The
+     * word m drops raises 1 / sqrt(m) above 2^16 / sqrt(X) by at most
+     * 2^-31; taking one off R (at least 2^-31 of it) keeps R below the
+     * truth, so no component rounds past 1. The error stays within
+     * 2^-29: two ulps at 30 bits. */
+    uint32_t r = fx_rsqrt_q30(m, fx_rsqrt_q29(m)) - 1u;
+    /* a_i 2^j / sqrt(X) = a_i R 2^j / 2^62; s >= 1 as j <= 31. */
+    const int s = 62 - j - FX_UBITS;
+    const int64_t half = (int64_t)1 << (s - 1);
+    return fx_d3((int32_t)(((int64_t)ax * r + half) >> s),
+                 (int32_t)(((int64_t)ay * r + half) >> s),
+                 (int32_t)(((int64_t)az * r + half) >> s));
+}
+
+fx_dir3 fx_d3_normalize(fx_vec3 v)
+{
+    return norm32(v.x, v.y, v.z);
+}
+
+/* v / 2^k rounded to nearest, kept within 31 bits. */
+static int32_t shrink(int64_t v, int k)
+{
+    int64_t r = (v + ((int64_t)1 << (k - 1))) >> k;
+    return r > INT32_MAX ? INT32_MAX : (int32_t)r;
+}
+
+fx_dir3 fx_d3_normalize64(int64_t x, int64_t y, int64_t z)
+{
+    uint64_t ux = x < 0 ? 0u - (uint64_t)x : (uint64_t)x;
+    uint64_t uy = y < 0 ? 0u - (uint64_t)y : (uint64_t)y;
+    uint64_t uz = z < 0 ? 0u - (uint64_t)z : (uint64_t)z;
+    uint64_t any = ux | uy | uz;
+    if (any <= (uint64_t)INT32_MAX)
+        return norm32((int32_t)x, (int32_t)y, (int32_t)z);
+    /* Keep 31 bits of the largest component. */
+    int k = 33 - fx_clz64(any);
+    return norm32(shrink(x, k), shrink(y, k), shrink(z, k));
+}
+
+fx_dir3 fx_d3_cross_unit(fx_vec3 a, fx_vec3 b)
+{
+    /* Each product is at most 2^62: the differences fit int64. */
+    return fx_d3_normalize64((int64_t)a.y * b.z - (int64_t)a.z * b.y,
+                             (int64_t)a.z * b.x - (int64_t)a.x * b.z,
+                             (int64_t)a.x * b.y - (int64_t)a.y * b.x);
+}

@@ -1,0 +1,143 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * fx_dir: unit vectors (ray directions, surface normals, directions to
+ * lights, the camera frame) with FX_UBITS fraction bits: RT_UNIT_BITS,
+ * 30 by default (Q2.30), each component an int32 within +-2^FX_UBITS.
+ * Positions, distances and colours stay Q16.16 (fx_vec3): the error of a
+ * picture comes from its directions (docs/accuracy.md), and a
+ * position-by-direction product still fits one 32x32->64 multiply.
+ * fx_dir3 is its own type, so that the compiler tells a unit vector from
+ * a position. Every operation states its rounding; none can overflow for
+ * unit inputs.
+ */
+#ifndef FX_DIR_H
+#define FX_DIR_H
+
+#include "fx_vec.h"
+
+#if RT_UNIT_BITS < 16 || RT_UNIT_BITS > 30
+#error "RT_UNIT_BITS must be 16..30 (fraction bits of unit vectors)"
+#endif
+
+#define FX_UBITS RT_UNIT_BITS
+#define FX_UONE ((int32_t)1 << FX_UBITS)
+
+/* Bits a unit component has beyond Q16.16, and half of its last one. */
+#define FX_USHIFT (FX_UBITS - 16)
+#define FX_UHALF16 (FX_USHIFT ? (int32_t)1 << (FX_USHIFT - 1) : 0)
+
+typedef struct {
+    int32_t x, y, z;
+} fx_dir3;
+
+/* Builds a unit vector from its components (FX_UBITS fraction bits). */
+static inline fx_dir3 fx_d3(int32_t x, int32_t y, int32_t z)
+{
+    fx_dir3 d;
+    d.x = x;
+    d.y = y;
+    d.z = z;
+    return d;
+}
+
+/* -a; exact (components are far from INT32_MIN). */
+static inline fx_dir3 fx_d3_neg(fx_dir3 a)
+{
+    return fx_d3(-a.x, -a.y, -a.z);
+}
+
+/* The components as plain integers, for the scale-free operations (a
+ * cross product's direction, a normalisation). */
+static inline fx_vec3 fx_d3_raw(fx_dir3 a)
+{
+    return fx_v3(a.x, a.y, a.z);
+}
+
+/* One component in Q16.16, rounded to nearest (ties toward +infinity). */
+static inline fx_t fx_u_to_fx(int32_t c)
+{
+    return (fx_t)((c + FX_UHALF16) >> FX_USHIFT);
+}
+
+/* a in Q16.16, each component rounded as fx_u_to_fx. */
+static inline fx_vec3 fx_d3_to_v3(fx_dir3 a)
+{
+    return fx_v3(fx_u_to_fx(a.x), fx_u_to_fx(a.y), fx_u_to_fx(a.z));
+}
+
+/* a.b exact, with 2 FX_UBITS fraction bits: below 2^61 in magnitude. */
+static inline int64_t fx_d3_dot_raw(fx_dir3 a, fx_dir3 b)
+{
+    return (int64_t)a.x * b.x + (int64_t)a.y * b.y + (int64_t)a.z * b.z;
+}
+
+/* a.b with FX_UBITS fraction bits, rounded to nearest (ties up). */
+static inline int32_t fx_d3_dotu(fx_dir3 a, fx_dir3 b)
+{
+    return (int32_t)((fx_d3_dot_raw(a, b) + ((int64_t)1 << (FX_UBITS - 1))) >>
+                     FX_UBITS);
+}
+
+/* a.b in Q16.16, rounded to nearest (ties up). */
+static inline fx_t fx_d3_dot(fx_dir3 a, fx_dir3 b)
+{
+    return (fx_t)((fx_d3_dot_raw(a, b) +
+                   ((int64_t)1 << (2 * FX_UBITS - 17))) >>
+                  (2 * FX_UBITS - 16));
+}
+
+/* p.d exact, with 16 + FX_UBITS fraction bits, for any Q16.16 p and unit
+ * d: each product is below 2^61, and every partial sum is bounded by
+ * |p| |d| < 2^63 (Cauchy-Schwarz), so nothing overflows. */
+static inline int64_t fx_pd_dot_raw(fx_vec3 p, fx_dir3 d)
+{
+    return (int64_t)p.x * d.x + (int64_t)p.y * d.y + (int64_t)p.z * d.z;
+}
+
+/* p.d in Q16.16, rounded to nearest (ties up); saturates. */
+static inline fx_t fx_pd_dot(fx_vec3 p, fx_dir3 d)
+{
+    return fx_sat64((fx_pd_dot_raw(p, d) + ((int64_t)1 << (FX_UBITS - 1))) >>
+                    FX_UBITS);
+}
+
+/* a + s c for a Q16.16 a and s and a unit component c (|c| <= 1): the
+ * product rounded once to nearest (ties up), which fits 32 bits as
+ * |s c| <= |s|; only the sum saturates. */
+static inline fx_t fx_madd_u(fx_t a, int32_t c, fx_t s)
+{
+    int64_t p = (int64_t)s * c;
+    return fx_add(a, (fx_t)((p + ((int64_t)1 << (FX_UBITS - 1))) >> FX_UBITS));
+}
+
+/* a + s d per component (fx_madd_u): a point along a ray. */
+static inline fx_vec3 fx_v3_madd_d(fx_vec3 a, fx_dir3 d, fx_t s)
+{
+    return fx_v3(fx_madd_u(a.x, d.x, s), fx_madd_u(a.y, d.y, s),
+                 fx_madd_u(a.z, d.z, s));
+}
+
+/* |d|^2 - 1 of a unit vector in Q32.32, rounded down: what rounding left
+ * of its length (rt_ray.h). Each component within two ulps: far below
+ * 2^31 for every FX_UBITS. */
+static inline int32_t fx_d3_unit_err(fx_dir3 d)
+{
+    return (int32_t)((fx_d3_dot_raw(d, d) - ((int64_t)1 << (2 * FX_UBITS))) >>
+                     (2 * FX_UBITS - 32));
+}
+
+/* Unit vector along (x, y, z), at any scale; the zero vector gives zero.
+ * Each component is within 2 ulps (2^-FX_UBITS) of the true value and
+ * never past +-1. Inputs beyond 31 bits are first rounded to 31 bits
+ * (a relative change below 2^-31). */
+fx_dir3 fx_d3_normalize64(int64_t x, int64_t y, int64_t z);
+
+/* Unit vector along v (any scale, as fx_d3_normalize64). */
+fx_dir3 fx_d3_normalize(fx_vec3 v);
+
+/* Unit vector along a x b, from the exact 64-bit cross product (any
+ * scale of a and b, so a unit vector's fx_d3_raw may be passed); the zero
+ * vector if a and b are parallel. */
+fx_dir3 fx_d3_cross_unit(fx_vec3 a, fx_vec3 b);
+
+#endif /* FX_DIR_H */
