@@ -6,9 +6,9 @@
 /* Unit vector along the 32-bit vector a, from its exact squared length. */
 static fx_dir3 norm32(int32_t ax, int32_t ay, int32_t az)
 {
-    uint64_t len2 = (uint64_t)((int64_t)ax * ax) +
-                    (uint64_t)((int64_t)ay * ay) +
-                    (uint64_t)((int64_t)az * az); /* <= 3 * 2^62 */
+    uint64_t len2 = (uint64_t)(fx_imul64(ax, ax)) +
+                    (uint64_t)(fx_imul64(ay, ay)) +
+                    (uint64_t)(fx_imul64(az, az)); /* <= 3 * 2^62 */
     if (len2 == 0)
         return fx_d3(0, 0, 0);
     /* Along an axis the answer is exact: +-1 there, as box and quad
@@ -30,9 +30,9 @@ static fx_dir3 norm32(int32_t ax, int32_t ay, int32_t az)
     /* a_i 2^j / sqrt(X) = a_i R 2^j / 2^62; s >= 1 as j <= 31. */
     const int s = 62 - j - FX_UBITS;
     const int64_t half = (int64_t)1 << (s - 1);
-    return fx_d3((int32_t)(((int64_t)ax * r + half) >> s),
-                 (int32_t)(((int64_t)ay * r + half) >> s),
-                 (int32_t)(((int64_t)az * r + half) >> s));
+    return fx_d3((int32_t)((fx_iumul64(ax, r) + half) >> s),
+                 (int32_t)((fx_iumul64(ay, r) + half) >> s),
+                 (int32_t)((fx_iumul64(az, r) + half) >> s));
 }
 
 fx_dir3 fx_d3_normalize(fx_vec3 v)
@@ -63,7 +63,7 @@ fx_dir3 fx_d3_normalize64(int64_t x, int64_t y, int64_t z)
 fx_dir3 fx_d3_cross_unit(fx_vec3 a, fx_vec3 b)
 {
     /* Each product is at most 2^62: the differences fit int64. */
-    return fx_d3_normalize64((int64_t)a.y * b.z - (int64_t)a.z * b.y,
-                             (int64_t)a.z * b.x - (int64_t)a.x * b.z,
-                             (int64_t)a.x * b.y - (int64_t)a.y * b.x);
+    return fx_d3_normalize64(fx_imul64(a.y, b.z) - fx_imul64(a.z, b.y),
+                             fx_imul64(a.z, b.x) - fx_imul64(a.x, b.z),
+                             fx_imul64(a.x, b.y) - fx_imul64(a.y, b.x));
 }

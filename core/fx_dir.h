@@ -68,7 +68,7 @@ static inline fx_vec3 fx_d3_to_v3(fx_dir3 a)
 /* a.b exact, with 2 FX_UBITS fraction bits: below 2^61 in magnitude. */
 static inline int64_t fx_d3_dot_raw(fx_dir3 a, fx_dir3 b)
 {
-    return (int64_t)a.x * b.x + (int64_t)a.y * b.y + (int64_t)a.z * b.z;
+    return fx_imul64(a.x, b.x) + fx_imul64(a.y, b.y) + fx_imul64(a.z, b.z);
 }
 
 /* a.b with FX_UBITS fraction bits, rounded to nearest (ties up). */
@@ -91,7 +91,7 @@ static inline fx_t fx_d3_dot(fx_dir3 a, fx_dir3 b)
  * |p| |d| < 2^63 (Cauchy-Schwarz), so nothing overflows. */
 static inline int64_t fx_pd_dot_raw(fx_vec3 p, fx_dir3 d)
 {
-    return (int64_t)p.x * d.x + (int64_t)p.y * d.y + (int64_t)p.z * d.z;
+    return fx_imul64(p.x, d.x) + fx_imul64(p.y, d.y) + fx_imul64(p.z, d.z);
 }
 
 /* p.d in Q16.16, rounded to nearest (ties up); saturates. */
@@ -106,7 +106,7 @@ static inline fx_t fx_pd_dot(fx_vec3 p, fx_dir3 d)
  * |s c| <= |s|; only the sum saturates. */
 static inline fx_t fx_madd_u(fx_t a, int32_t c, fx_t s)
 {
-    int64_t p = (int64_t)s * c;
+    int64_t p = fx_imul64(s, c);
     return fx_add(a, (fx_t)((p + ((int64_t)1 << (FX_UBITS - 1))) >> FX_UBITS));
 }
 
@@ -134,6 +134,28 @@ fx_dir3 fx_d3_normalize64(int64_t x, int64_t y, int64_t z);
 
 /* Unit vector along v (any scale, as fx_d3_normalize64). */
 fx_dir3 fx_d3_normalize(fx_vec3 v);
+
+/* One component of fx_d3_renorm: c (1 - e / 2), kept within +-1. */
+static inline int32_t fx_renorm_c(int32_t c, int32_t e)
+{
+    int32_t v = c - (int32_t)((fx_imul64(c, e) + FX_UONE) >> (FX_UBITS + 1));
+    return v > FX_UONE ? FX_UONE : (v < -FX_UONE ? -FX_UONE : v);
+}
+
+/* Unit vector along u, a vector already within 2^-15 of unit length (a
+ * mirror direction, say): one Newton step u (3 - |u|^2) / 2, which leaves
+ * an error of about (|u| - 1)^2, for a fraction of a normalisation's
+ * work. Farther from unit length it normalises in full. */
+static inline fx_dir3 fx_d3_renorm(fx_dir3 u)
+{
+    /* e = |u|^2 - 1 with FX_UBITS fraction bits. */
+    const int64_t e = (fx_d3_dot_raw(u, u) - ((int64_t)1 << (2 * FX_UBITS)) +
+                       ((int64_t)1 << (FX_UBITS - 1))) >> FX_UBITS;
+    if (e > (FX_UONE >> 15) || e < -(FX_UONE >> 15))
+        return fx_d3_normalize(fx_d3_raw(u));
+    return fx_d3(fx_renorm_c(u.x, (int32_t)e), fx_renorm_c(u.y, (int32_t)e),
+                 fx_renorm_c(u.z, (int32_t)e));
+}
 
 /* Unit vector along a x b, from the exact 64-bit cross product (any
  * scale of a and b, so a unit vector's fx_d3_raw may be passed); the zero

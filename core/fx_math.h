@@ -66,6 +66,67 @@ static inline fx_t fx_sat64(int64_t v)
 #define FX_HAVE_OVERFLOW_BUILTINS 0
 #endif
 
+/* 1 where the core has no 32x32->64 multiply (Cortex-M0, M0+ and M1:
+ * ARMv6-M). There the compiler calls a 64x64 library multiply for every
+ * 64-bit product, about 45 instructions with the call; the products
+ * below, from four 16x16 multiplies inline, give the same bits in about
+ * 17. Elsewhere they are the one-instruction product. */
+#if defined(__ARM_ARCH_6M__)
+#define FX_SOFT_MUL64 1
+#else
+#define FX_SOFT_MUL64 0
+#endif
+
+/* hh 2^32 + mid 2^16 + ll, in wrapping unsigned arithmetic: the exact
+ * product the callers below assemble (it fits int64). */
+static inline int64_t fx_join64(int64_t hh, int64_t mid, uint32_t ll)
+{
+    return (int64_t)(((uint64_t)hh << 32) + ((uint64_t)mid << 16) + ll);
+}
+
+/* a * b, exact, from 16-bit halves (the low halves unsigned): each of the
+ * four partial products fits 32 bits. */
+static inline int64_t fx_imul64_soft(int32_t a, int32_t b)
+{
+    int32_t ah = a >> 16, bh = b >> 16;
+    uint32_t al = (uint32_t)a & 0xFFFFu, bl = (uint32_t)b & 0xFFFFu;
+    int64_t mid = (int64_t)(ah * (int32_t)bl) + (int64_t)((int32_t)al * bh);
+    return fx_join64(ah * bh, mid, al * bl);
+}
+
+/* a * b for an unsigned b below 2^32, exact, as fx_imul64_soft. */
+static inline int64_t fx_iumul64_soft(int32_t a, uint32_t b)
+{
+    int32_t ah = a >> 16;
+    uint32_t al = (uint32_t)a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
+    int64_t mid = (int64_t)(ah * (int32_t)bl) + (int64_t)(al * bh);
+    return fx_join64(ah * (int32_t)bh, mid, al * bl);
+}
+
+/* a * b for unsigned a and b, exact, as fx_imul64_soft. */
+static inline uint64_t fx_umul64_soft(uint32_t a, uint32_t b)
+{
+    uint32_t ah = a >> 16, al = a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
+    uint64_t mid = (uint64_t)(ah * bl) + (al * bh);
+    return ((uint64_t)(ah * bh) << 32) + (mid << 16) + al * bl;
+}
+
+/* The exact 64-bit products of 32-bit operands (FX_SOFT_MUL64). */
+static inline int64_t fx_imul64(int32_t a, int32_t b)
+{
+    return FX_SOFT_MUL64 ? fx_imul64_soft(a, b) : (int64_t)a * b;
+}
+
+static inline int64_t fx_iumul64(int32_t a, uint32_t b)
+{
+    return FX_SOFT_MUL64 ? fx_iumul64_soft(a, b) : (int64_t)a * b;
+}
+
+static inline uint64_t fx_umul64(uint32_t a, uint32_t b)
+{
+    return FX_SOFT_MUL64 ? fx_umul64_soft(a, b) : (uint64_t)a * b;
+}
+
 /* Adds; exact, saturates on overflow. */
 static inline fx_t fx_add(fx_t a, fx_t b)
 {
@@ -126,7 +187,7 @@ static inline int64_t fx_round_bias(int64_t p)
  * 64-bit product is exact, so the error is at most 0.5 ulp. */
 static inline fx_t fx_mul(fx_t a, fx_t b)
 {
-    int64_t p = (int64_t)a * b;
+    int64_t p = fx_imul64(a, b);
     p += fx_round_bias(p); /* |p| < 2^62 + 2^15: no overflow */
     int32_t hi = (int32_t)(p >> 32);
     /* p >> 16 fits in 32 bits exactly when hi is in [-2^15, 2^15): one

@@ -7,7 +7,7 @@
 #ifndef FX_RSQRT_H
 #define FX_RSQRT_H
 
-#include <stdint.h>
+#include "fx_math.h"
 
 extern const uint16_t fx_rsqrt_tab[192];
 
@@ -19,7 +19,7 @@ extern const uint16_t fx_rsqrt_tab[192];
 static inline int32_t fx_rsqrt_q29(uint32_t m)
 {
     uint32_t r0 = fx_rsqrt_tab[(m >> 24) - 64];
-    uint32_t p = (uint32_t)(((uint64_t)m * (r0 * r0)) >> 32); /* Q4.28 */
+    uint32_t p = (uint32_t)(fx_umul64(m, r0 * r0) >> 32); /* Q4.28 */
     int32_t e = (int32_t)(0x10000000u - p); /* Q.28; |e| < 2^21 */
     int32_t e7 = e >> 7;
     int32_t poly = (e >> 1) + ((3 * ((e7 * e7) >> 14)) >> 3);
@@ -32,12 +32,12 @@ static inline int32_t fx_rsqrt_q29(uint32_t m)
 static inline uint32_t fx_rsqrt_q30(uint32_t m, int32_t r)
 {
     uint32_t ur = (uint32_t)r; /* (2^29, 2^30] */
-    uint64_t r2 = (uint64_t)ur * ur; /* < 2^60 */
+    uint64_t r2 = fx_umul64(ur, ur); /* < 2^60 */
     /* m r^2 / 2^32, low by at most 2: at most 2^58 since r is low. */
-    uint64_t p = (uint64_t)m * (uint32_t)(r2 >> 32) +
-                 (((uint64_t)m * (uint32_t)r2) >> 32);
+    uint64_t p = fx_umul64(m, (uint32_t)(r2 >> 32)) +
+                 (fx_umul64(m, (uint32_t)r2) >> 32);
     uint64_t e = ((uint64_t)1 << 58) - p; /* e * 2^58, below 2^39 */
-    return 2 * ur + (uint32_t)(((uint64_t)ur * (e >> 8)) >> 50);
+    return 2 * ur + (uint32_t)(fx_umul64(ur, (uint32_t)(e >> 8)) >> 50);
 }
 
 #endif /* FX_RSQRT_H */

@@ -8,8 +8,8 @@ fx_t fx_v3_dot(fx_vec3 a, fx_vec3 b)
     /* Each exact product is at most 2^62 in magnitude; three of them can
      * overflow int64. Halve each (floor), keep the dropped low bits apart,
      * and fold them back in when rounding. */
-    int64_t p0 = (int64_t)a.x * b.x, p1 = (int64_t)a.y * b.y;
-    int64_t p2 = (int64_t)a.z * b.z;
+    int64_t p0 = fx_imul64(a.x, b.x), p1 = fx_imul64(a.y, b.y);
+    int64_t p2 = fx_imul64(a.z, b.z);
     int64_t half = (p0 >> 1) + (p1 >> 1) + (p2 >> 1);
     int64_t lows = (p0 & 1) + (p1 & 1) + (p2 & 1);
 #if RT_ACCURACY == 0
@@ -39,9 +39,9 @@ fx_vec3 fx_v3_cross(fx_vec3 a, fx_vec3 b)
 {
     /* a.y*b.z - a.z*b.y: each product is below 2^62, the difference below
      * 2^63, so int64 holds it exactly. */
-    int64_t x = (int64_t)a.y * b.z - (int64_t)a.z * b.y;
-    int64_t y = (int64_t)a.z * b.x - (int64_t)a.x * b.z;
-    int64_t z = (int64_t)a.x * b.y - (int64_t)a.y * b.x;
+    int64_t x = fx_imul64(a.y, b.z) - fx_imul64(a.z, b.y);
+    int64_t y = fx_imul64(a.z, b.x) - fx_imul64(a.x, b.z);
+    int64_t z = fx_imul64(a.x, b.y) - fx_imul64(a.y, b.x);
     return fx_v3(fx_from_q32(x), fx_from_q32(y), fx_from_q32(z));
 }
 
@@ -148,7 +148,7 @@ static inline fx_t unit_fast(int32_t b, uint32_t r)
  * product, then 12 more bits. */
 static inline fx_t unit_component(int32_t b, int32_t r)
 {
-    int32_t hi = (int32_t)(((int64_t)b * r) >> 32);
+    int32_t hi = (int32_t)((fx_imul64(b, r)) >> 32);
     return (hi + 0x800) >> 12;
 }
 #endif
@@ -169,7 +169,7 @@ static void mul_128(uint64_t a, uint64_t b, uint64_t *hi, uint64_t *lo)
  * (2^17 |a|)^2 >= (2n + 1)^2 len2, both sides below 2^98. */
 static int past_half(uint32_t ua, uint32_t n, uint64_t len2)
 {
-    uint64_t lh, ll, rh, rl, a2 = (uint64_t)ua * ua; /* <= 2^62 */
+    uint64_t lh, ll, rh, rl, a2 = fx_umul64(ua, ua); /* <= 2^62 */
     uint64_t k = 2 * (uint64_t)n + 1;
     lh = a2 >> 30; /* a2 * 2^34 */
     ll = a2 << 34;
@@ -185,7 +185,7 @@ static int past_half(uint32_t ua, uint32_t n, uint64_t len2)
 static inline fx_t unit_exact(fx_t a, int32_t b, uint32_t r, uint64_t len2)
 {
     uint32_t ub = b < 0 ? 0u - (uint32_t)b : (uint32_t)b;
-    uint32_t hi = (uint32_t)(((uint64_t)ub * r) >> 32); /* < 2^30 */
+    uint32_t hi = (uint32_t)((fx_umul64(ub, r)) >> 32); /* < 2^30 */
     uint32_t n = hi >> 13, w = hi & 0x1FFFu;
     if (w - (0x1000u - 4u) <= 8u)
         n += (uint32_t)past_half(a < 0 ? 0u - (uint32_t)a : (uint32_t)a, n,
@@ -266,7 +266,7 @@ static fx_vec3 norm64(int64_t x, int64_t y, int64_t z)
 
 fx_vec3 fx_v3_cross_unit(fx_vec3 a, fx_vec3 b)
 {
-    return norm64((int64_t)a.y * b.z - (int64_t)a.z * b.y,
-                  (int64_t)a.z * b.x - (int64_t)a.x * b.z,
-                  (int64_t)a.x * b.y - (int64_t)a.y * b.x);
+    return norm64(fx_imul64(a.y, b.z) - fx_imul64(a.z, b.y),
+                  fx_imul64(a.z, b.x) - fx_imul64(a.x, b.z),
+                  fx_imul64(a.x, b.y) - fx_imul64(a.y, b.x));
 }

@@ -50,7 +50,7 @@ static inline fx_vec3 fx_v3_scale(fx_vec3 a, fx_t s)
 /* a * b rounded as fx_mul but not saturated: |result| <= 2^46. */
 static inline int64_t fx_mul_wide(fx_t a, fx_t b)
 {
-    int64_t p = (int64_t)a * b;
+    int64_t p = fx_imul64(a, b);
     return (p + fx_round_bias(p)) >> 16;
 }
 
@@ -58,7 +58,7 @@ static inline int64_t fx_mul_wide(fx_t a, fx_t b)
  * +infinity; precise: ties to even; fast: down); saturates. */
 static inline fx_t fx_madd1(fx_t a, fx_t b, fx_t s)
 {
-    int64_t p = (int64_t)b * s;
+    int64_t p = fx_imul64(b, s);
     p += fx_round_bias(p);
     int32_t hi = (int32_t)(p >> 32);
     /* The usual case: the rounded product fits in 32 bits, and a 32-bit
@@ -73,7 +73,7 @@ static inline fx_t fx_madd1(fx_t a, fx_t b, fx_t s)
  * saturate, and the range check falls away. Same results as fx_madd1. */
 static inline fx_t fx_madd1_unit(fx_t a, fx_t b, fx_t s)
 {
-    int64_t p = (int64_t)b * s;
+    int64_t p = fx_imul64(b, s);
     p += fx_round_bias(p);
     return fx_add(a, (fx_t)(p >> 16));
 }
@@ -98,7 +98,7 @@ static inline fx_vec3 fx_v3_madd_unit(fx_vec3 a, fx_vec3 b, fx_t s)
  * each product is below 2^51. */
 static inline int64_t fx_v3_dot_q32(fx_vec3 a, fx_vec3 b)
 {
-    return (int64_t)a.x * b.x + (int64_t)a.y * b.y + (int64_t)a.z * b.z;
+    return fx_imul64(a.x, b.x) + fx_imul64(a.y, b.y) + fx_imul64(a.z, b.z);
 }
 
 /* Dot product with a bounded operand (as fx_v3_dot_q32), rounded once as

@@ -9,15 +9,25 @@
 
 #include "fx_dir.h"
 
-/* Mirror direction d - 2 (d.n) n of unit d about unit n, renormalised.
- * Each component is formed exactly from the rounded d.n, with 2 FX_UBITS
- * fraction bits (below 2^62), then normalised. */
+/* One component of d - 2 k n, rounded once from its exact value:
+ * (d 2^U / 2 - k n + 2^(U-2)) >> (U - 1). Within 32 bits, as the mirror
+ * image of a unit vector is one. */
+static inline int32_t rt_mirror_c(int32_t d, int32_t k, int32_t n)
+{
+    return (int32_t)(((int64_t)d * (FX_UONE / 2) - fx_imul64(k, n) +
+                      ((int64_t)1 << (FX_UBITS - 2))) >>
+                     (FX_UBITS - 1));
+}
+
+/* Mirror direction d - 2 (d.n) n of unit d about unit n: formed from the
+ * rounded d.n, then only renormalised (fx_d3_renorm), since the
+ * reflection of a unit vector is one. */
 static inline fx_dir3 rt_reflect_dir(fx_dir3 d, fx_dir3 n)
 {
-    const int64_t k = 2 * (int64_t)fx_d3_dotu(d, n);
-    return fx_d3_normalize64((int64_t)d.x * FX_UONE - k * n.x,
-                             (int64_t)d.y * FX_UONE - k * n.y,
-                             (int64_t)d.z * FX_UONE - k * n.z);
+    const int32_t k = fx_d3_dotu(d, n); /* |k| <= 2^FX_UBITS */
+    return fx_d3_renorm(fx_d3(rt_mirror_c(d.x, k, n.x),
+                              rt_mirror_c(d.y, k, n.y),
+                              rt_mirror_c(d.z, k, n.z)));
 }
 
 /* Bit length of a non-negative value (0 for 0). */
@@ -36,20 +46,22 @@ static inline int rt_bitlen64(uint64_t v)
 static inline int rt_refract_dir(fx_dir3 d, fx_dir3 n, fx_t eta, fx_dir3 *t)
 {
     const int64_t one = (int64_t)1 << FX_UBITS;
-    const int64_t cosi = -(int64_t)fx_d3_dotu(d, n); /* in [0, 1] */
-    const int64_t sin2 = one - ((cosi * cosi) >> FX_UBITS); /* [0, 1] */
+    const int32_t cosi = -fx_d3_dotu(d, n); /* in [0, 1] */
+    const int32_t sin2 =
+        (int32_t)(one - (fx_imul64(cosi, cosi) >> FX_UBITS)); /* [0, 1] */
     /* eta^2 sin2 / 2^32 with eta^2 = e1 2^16 + e0 (Q32.32): two products
      * below 2^61 instead of one of 76 bits. */
-    const int64_t eta2 = (int64_t)eta * eta; /* < 2^46 */
-    const int64_t e1 = eta2 >> 16, e0 = eta2 & 0xFFFF;
-    const int64_t es = (e1 * sin2 + ((e0 * sin2) >> 16)) >> 16;
+    const int64_t eta2 = fx_imul64(eta, eta); /* < 2^46 */
+    const int32_t e1 = (int32_t)(eta2 >> 16), e0 = (int32_t)(eta2 & 0xFFFF);
+    const int64_t es =
+        (fx_imul64(e1, sin2) + (fx_imul64(e0, sin2) >> 16)) >> 16;
     const int64_t k = one - es;
     if (k < 0)
         return 0;
     /* sqrt(k) with FX_UBITS fraction bits: k << FX_UBITS <= 2^60. */
     const int64_t sq = (int64_t)fx_isqrt64((uint64_t)k << FX_UBITS);
     /* eta cos_i to FX_UBITS fraction bits, rounded (below 2^37). */
-    const int64_t ec = ((int64_t)eta * cosi + 0x8000) >> 16;
+    const int64_t ec = (fx_imul64(eta, cosi) + 0x8000) >> 16;
     int64_t ce = (int64_t)eta << FX_USHIFT; /* eta, FX_UBITS fraction bits */
     int64_t cf = ec - sq;
     /* Only the direction of ce d + cf n matters: scale both coefficients
@@ -61,8 +73,10 @@ static inline int rt_refract_dir(fx_dir3 d, fx_dir3 n, fx_t eta, fx_dir3 *t)
         ce = (ce + ((int64_t)1 << (sh - 1))) >> sh;
         cf = (cf + ((int64_t)1 << (sh - 1))) >> sh;
     }
-    *t = fx_d3_normalize64(ce * d.x + cf * n.x, ce * d.y + cf * n.y,
-                           ce * d.z + cf * n.z);
+    const int32_t a = (int32_t)ce, b = (int32_t)cf; /* now within 31 bits */
+    *t = fx_d3_normalize64(fx_imul64(a, d.x) + fx_imul64(b, n.x),
+                           fx_imul64(a, d.y) + fx_imul64(b, n.y),
+                           fx_imul64(a, d.z) + fx_imul64(b, n.z));
     return 1;
 }
 

@@ -62,20 +62,25 @@ static inline int32_t rt_cam_col_k(unsigned width, unsigned n, unsigned x,
 static inline rt_cam_ray rt_cam_row_base(const rt_cam_frame *cf, int32_t sy)
 {
     rt_cam_ray b;
-    b.x = ((int64_t)cf->w.x << cf->fbits) + (int64_t)cf->up.x * sy;
-    b.y = ((int64_t)cf->w.y << cf->fbits) + (int64_t)cf->up.y * sy;
-    b.z = ((int64_t)cf->w.z << cf->fbits) + (int64_t)cf->up.z * sy;
+    b.x = ((int64_t)cf->w.x << cf->fbits) + fx_imul64(cf->up.x, sy);
+    b.y = ((int64_t)cf->w.y << cf->fbits) + fx_imul64(cf->up.y, sy);
+    b.z = ((int64_t)cf->w.z << cf->fbits) + fx_imul64(cf->up.z, sy);
     return b;
 }
 
 /* Unit direction of the sample at offset sx (rt_cam_soff) along the
- * sample row whose base is b (rt_cam_row_base). */
+ * sample row whose base is b (rt_cam_row_base). The exact sum is rounded
+ * to FX_UBITS fraction bits first (a relative 2^-31 at most), where it
+ * fits 32 bits for any view narrower than about 120 degrees: then the
+ * normalisation needs no 64-bit scaling. */
 static inline fx_dir3 rt_cam_dir(const rt_cam_frame *cf, const rt_cam_ray *b,
                                  int32_t sx)
 {
-    return fx_d3_normalize64(b->x + (int64_t)cf->right.x * sx,
-                             b->y + (int64_t)cf->right.y * sx,
-                             b->z + (int64_t)cf->right.z * sx);
+    const int fb = cf->fbits;
+    const int64_t h = (int64_t)1 << (fb - 1);
+    return fx_d3_normalize64((b->x + fx_imul64(cf->right.x, sx) + h) >> fb,
+                             (b->y + fx_imul64(cf->right.y, sx) + h) >> fb,
+                             (b->z + fx_imul64(cf->right.z, sx) + h) >> fb);
 }
 
 #endif /* RT_CAMERA_H */

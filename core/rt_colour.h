@@ -26,7 +26,7 @@ static inline rt_rgb rt_rgb3(fx_t r, fx_t g, fx_t b)
 /* a b, rounded to nearest, without saturation (see above). */
 static inline fx_t rt_cmul(fx_t a, fx_t b)
 {
-    return (fx_t)(((int64_t)a * b + 0x8000) >> 16);
+    return (fx_t)((fx_imul64(a, b) + 0x8000) >> 16);
 }
 
 /* c += w * a (per channel). */

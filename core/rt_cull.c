@@ -43,6 +43,8 @@ static void cull_obj_set(cull_obj *k, const rt_object *o, const rt_scene *s,
     int64_t r = (int64_t)o->br + o->br / 64 + 1024;
     k->all = 1;
     k->side = 0;
+    k->p = fx_v3(0, 0, 0);
+    k->r = 0;
     k->pa = k->pb = k->pc = 0;
     if (r < FX_INT(16384) && px > -FX_INT(16384) && px < FX_INT(16384) &&
         py > -FX_INT(16384) && py < FX_INT(16384) && pz > -FX_INT(16384) &&

@@ -46,11 +46,11 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         /* The common case, in 32-bit operands (smull/smlal on a Cortex-M3):
          * the same values as the general path below. */
         int32_t ox = c.x - ray->o.x, oy = c.y - ray->o.y, oz = c.z - ray->o.z;
-        int64_t q = (int64_t)ox * ray->d.x + (int64_t)oy * ray->d.y +
-                    (int64_t)oz * ray->d.z;
+        int64_t q = fx_imul64(ox, ray->d.x) + fx_imul64(oy, ray->d.y) +
+                    fx_imul64(oz, ray->d.z);
         /* |t| <= |oc| < sqrt(3) 2^30, so t fits; t +- r may not. */
         int32_t t32 = (int32_t)((q + UHALF) >> FX_UBITS);
-        t32 -= (int32_t)(((int64_t)t32 * ray->e + ((int64_t)1 << 31)) >> 32);
+        t32 -= (int32_t)((fx_imul64(t32, ray->e) + ((int64_t)1 << 31)) >> 32);
 #if FX_HAVE_OVERFLOW_BUILTINS
         /* The same tests in 32 bits (r >= 0): t32 + r <= tmin is
          * t32 <= tmin - r, false when that underflows; t32 - r >= tmax is
@@ -65,9 +65,9 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
             return 0;
 #endif
         /* Each h component is bounded by |oc| (h is a projection). */
-        int32_t hx = ox - (int32_t)(((int64_t)t32 * ray->d.x + UHALF) >> FX_UBITS);
-        int32_t hy = oy - (int32_t)(((int64_t)t32 * ray->d.y + UHALF) >> FX_UBITS);
-        int32_t hz = oz - (int32_t)(((int64_t)t32 * ray->d.z + UHALF) >> FX_UBITS);
+        int32_t hx = ox - (int32_t)((fx_imul64(t32, ray->d.x) + UHALF) >> FX_UBITS);
+        int32_t hy = oy - (int32_t)((fx_imul64(t32, ray->d.y) + UHALF) >> FX_UBITS);
+        int32_t hz = oz - (int32_t)((fx_imul64(t32, ray->d.z) + UHALF) >> FX_UBITS);
         if (hx > r || hx < -r || hy > r || hy < -r || hz > r || hz < -r)
             return 0;
         h[0] = hx;
@@ -94,7 +94,7 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
     }
     uint64_t h2 = (uint64_t)(h[0] * h[0]) + (uint64_t)(h[1] * h[1]) +
                   (uint64_t)(h[2] * h[2]);
-    uint64_t r2 = (uint64_t)((int64_t)r * r);
+    uint64_t r2 = (uint64_t)(fx_imul64(r, r));
     if (h2 > r2)
         return 0;
     *tca = t;
@@ -156,13 +156,13 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
     /* A flat quad (rt_object.flat) has n = (0, n.y, 0): the same sums
      * without the zero terms. */
     const int flat = o->flat;
-    int64_t den = flat ? (int64_t)r->d.y * o->n.y : fx_d3_dot_raw(r->d, o->n);
+    int64_t den = flat ? fx_imul64(r->d.y, o->n.y) : fx_d3_dot_raw(r->d, o->n);
     if (den < RT_PAR_DOT && den > -RT_PAR_DOT)
         return 0;
     /* num = dist - o.n with 16 + FX_UBITS fraction bits (|num| < 2^63);
      * den = d.n with 2 FX_UBITS. */
     int64_t num = (int64_t)o->dist * FX_UONE -
-                  (flat ? (int64_t)r->o.y * o->n.y
+                  (flat ? fx_imul64(r->o.y, o->n.y)
                         : fx_pd_dot_raw(r->o, o->n));
     if ((num < 0) != (den < 0))
         return 0;
@@ -185,9 +185,9 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
         return 0;
     const fx_t tt = (fx_t)tq; /* below tmax, so it fits */
     int64_t qx = (int64_t)r->o.x - o->a.x +
-                 (((int64_t)tt * r->d.x + UHALF) >> FX_UBITS);
+                 ((fx_imul64(tt, r->d.x) + UHALF) >> FX_UBITS);
     int64_t qz = (int64_t)r->o.z - o->a.z +
-                 (((int64_t)tt * r->d.z + UHALF) >> FX_UBITS);
+                 ((fx_imul64(tt, r->d.z) + UHALF) >> FX_UBITS);
     int64_t u, v;
     if (flat == 1) { /* pu = (0, 0, pu.z), pv = (pv.x, 0, 0) */
         u = qz * o->pu.z;
@@ -197,15 +197,15 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
         v = qz * o->pv.z;
     } else {
         int64_t qy = (int64_t)r->o.y - o->a.y +
-                     (((int64_t)tt * r->d.y + UHALF) >> FX_UBITS);
+                     ((fx_imul64(tt, r->d.y) + UHALF) >> FX_UBITS);
         if (qx == (int32_t)qx && qy == (int32_t)qy && qz == (int32_t)qz) {
             /* The usual case: 32-bit operands, the same sums. */
             const int32_t x = (int32_t)qx, y = (int32_t)qy;
             const int32_t z = (int32_t)qz;
-            u = (int64_t)x * o->pu.x + (int64_t)y * o->pu.y +
-                (int64_t)z * o->pu.z;
-            v = (int64_t)x * o->pv.x + (int64_t)y * o->pv.y +
-                (int64_t)z * o->pv.z;
+            u = fx_imul64(x, o->pu.x) + fx_imul64(y, o->pu.y) +
+                fx_imul64(z, o->pu.z);
+            v = fx_imul64(x, o->pv.x) + fx_imul64(y, o->pv.y) +
+                fx_imul64(z, o->pv.z);
         } else {
             u = qx * o->pu.x + qy * o->pu.y + qz * o->pu.z;
             v = qx * o->pv.x + qy * o->pv.y + qz * o->pv.z;
@@ -247,7 +247,7 @@ static void slab_inv_set(slab_inv *v, int32_t d)
 /* x / d (Q16.16 x), within 2^-31 relative; saturates. |x m| < 2^63. */
 static fx_t slab_t(const slab_inv *v, fx_t x)
 {
-    int64_t q = ((int64_t)x * v->m) >> v->sh;
+    int64_t q = fx_iumul64(x, v->m) >> v->sh;
     return fx_sat64(v->neg ? -q : q);
 }
 
@@ -352,7 +352,7 @@ static int quadratic(fx_t a, fx_t b, fx_t c, int real, fx_t root[2])
         root[0] = root[1] = fx_div(fx_neg(c), 2 * b); /* |b| < 2^30 */
         return 1;
     }
-    int64_t disc = (int64_t)b * b - (int64_t)a * c;
+    int64_t disc = fx_imul64(b, b) - fx_imul64(a, c);
     if (disc < 0) {
         if (!real && disc < -((int64_t)fx_abs(b) +
                               ((int64_t)fx_abs(a) + fx_abs(c)) / 2 + 1))
@@ -391,16 +391,16 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
     fx_t ur = o->ur, uh = o->uh;
 
     /* Side: x^2 + z^2 = R(y)^2, R = ur (cylinder) or k (uh - y) (cone). */
-    fx_t a = fx_from_q32((int64_t)dx * dx + (int64_t)dz * dz);
-    fx_t b = fx_from_q32((int64_t)px * dx + (int64_t)pz * dz);
-    fx_t c = fx_from_q32((int64_t)px * px + (int64_t)pz * pz -
-                         (int64_t)ur * ur);
+    fx_t a = fx_from_q32(fx_imul64(dx, dx) + fx_imul64(dz, dz));
+    fx_t b = fx_from_q32(fx_imul64(px, dx) + fx_imul64(pz, dz));
+    fx_t c = fx_from_q32(fx_imul64(px, px) + fx_imul64(pz, pz) -
+                         fx_imul64(ur, ur));
     if (cone) {
         fx_t kdy = fx_mul(o->k, dy), ky = fx_mul(o->k, fx_sub(uh, py));
         a = fx_sub(a, fx_mul(kdy, kdy));
         b = fx_add(b, fx_mul(ky, kdy));
-        c = fx_from_q32((int64_t)px * px + (int64_t)pz * pz -
-                        (int64_t)ky * ky);
+        c = fx_from_q32(fx_imul64(px, px) + fx_imul64(pz, pz) -
+                        fx_imul64(ky, ky));
     }
     /* Clearly steeper than the side (not within rounding of a
      * generator's direction, where one root is far and saturates). */
@@ -446,8 +446,8 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
             fx_t tl = to_frame(tw - tca, k);
             fx_t x = fx_add(px, fx_mul(tl, dx));
             fx_t z = fx_add(pz, fx_mul(tl, dz));
-            if ((int64_t)x * x + (int64_t)z * z >
-                (int64_t)ur * ur + (int64_t)ur * (2 * RT_RIM_SLACK))
+            if (fx_imul64(x, x) + fx_imul64(z, z) >
+                fx_imul64(ur, ur) + (int64_t)ur * (2 * RT_RIM_SLACK))
                 continue;
             if (take(tw, tmin, &best)) {
                 *part = (uint8_t)(1 + cap);
@@ -519,8 +519,8 @@ fx_dir3 rt_normal(const rt_object *o, fx_vec3 p, uint8_t part)
         fx_t x = fx_sub(p.x, o->a.x), z = fx_sub(p.z, o->a.z);
         fx_t y = 0;
         if (o->kind == RT_CONE) {
-            fx_t rho = (fx_t)fx_sqrt_q32((uint64_t)((int64_t)x * x) +
-                                         (uint64_t)((int64_t)z * z));
+            fx_t rho = (fx_t)fx_sqrt_q32((uint64_t)(fx_imul64(x, x)) +
+                                         (uint64_t)(fx_imul64(z, z)));
             if (rho == 0)
                 return fx_d3(0, FX_UONE, 0); /* apex */
             y = fx_mul(o->k, rho);

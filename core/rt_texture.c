@@ -98,7 +98,7 @@ fx_dir3 rt_bump(const rt_material *m, const rt_object *o, fx_vec3 p,
     const fx_t g[3] = { noise(1, i, s), noise(2, i, s), noise(3, i, s) };
     const int sh = 32 - FX_UBITS;
     return fx_d3_normalize64(
-        (int64_t)n.x + (((int64_t)g[0] * m->bump) >> sh),
-        (int64_t)n.y + (((int64_t)g[1] * m->bump) >> sh),
-        (int64_t)n.z + (((int64_t)g[2] * m->bump) >> sh));
+        (int64_t)n.x + ((fx_imul64(g[0], m->bump)) >> sh),
+        (int64_t)n.y + ((fx_imul64(g[1], m->bump)) >> sh),
+        (int64_t)n.z + ((fx_imul64(g[2], m->bump)) >> sh));
 }

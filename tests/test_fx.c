@@ -749,8 +749,37 @@ static void test_floor_div(void)
     CHECK_EQ(rem, 0);
 }
 
+/* The 16x16-split products the Cortex-M0 build uses (FX_SOFT_MUL64) give
+ * the exact 64-bit products, the extremes included. */
+static void test_soft_mul64(void)
+{
+    static const int32_t edge[] = { 0, 1, -1, 65535, 65536, -65536, -65537,
+                                    INT32_MAX, INT32_MIN, INT32_MIN + 1 };
+    const int ne = (int)(sizeof edge / sizeof edge[0]);
+    uint64_t rng = 0x2545F4914F6CDD1DULL;
+    long bad = 0;
+    for (long i = 0; i < 2000000L + ne * ne; i++) {
+        int32_t a, b;
+        if (i < ne * ne) {
+            a = edge[i / ne];
+            b = edge[i % ne];
+        } else {
+            uint64_t r = th_rnd64(&rng);
+            a = (int32_t)(uint32_t)r;
+            b = (int32_t)(uint32_t)(r >> 32);
+        }
+        bad += fx_imul64_soft(a, b) != (int64_t)a * b;
+        bad += fx_iumul64_soft(a, (uint32_t)b) != (int64_t)a * (uint32_t)b;
+        bad += fx_umul64_soft((uint32_t)a, (uint32_t)b) !=
+               (uint64_t)(uint32_t)a * (uint32_t)b;
+    }
+    if (!CHECK(bad == 0))
+        printf("    %ld soft 64-bit products differ\n", bad);
+}
+
 int main(void)
 {
+    test_soft_mul64();
     test_truth();
     test_shift_is_arithmetic();
     test_add_sub_neg_abs();

@@ -15,7 +15,7 @@
 #include <math.h>
 #include <stdint.h>
 
-#include "fx_vec.h"
+#include "fx_dir.h"
 #include "harness.h"
 
 typedef __int128 i128;
@@ -395,8 +395,72 @@ static void test_normalize(void)
     CHECK(max_err <= NORMALIZE_BOUND);
 }
 
+/* fx_dir: unit vectors with FX_UBITS fraction bits. Random vectors of
+ * every scale (32 and 64 bits): each component within 2.5 ulps of the
+ * true one, never past 1; axis directions exact; a near-unit vector
+ * renormalised within the same bound. */
+static void test_unit_vectors(void)
+{
+    long double max_err = 0, max_renorm = 0;
+    long past = 0;
+    for (long i = 0; i < N_RANDOM; i++) {
+        fx_vec3 a = rnd_vec();
+        int wide = i & 1;
+        int sh = (int)(rnd32() % 31);
+        int64_t x = wide ? (int64_t)a.x << sh : a.x;
+        int64_t y = wide ? (int64_t)a.y << sh : a.y;
+        int64_t z = wide ? (int64_t)a.z << sh : a.z;
+        if (x == 0 && y == 0 && z == 0)
+            continue;
+        fx_dir3 u = wide ? fx_d3_normalize64(x, y, z) : fx_d3_normalize(a);
+        long double l = sqrtl((long double)x * x + (long double)y * y +
+                              (long double)z * z);
+        const long double one = (long double)FX_UONE;
+        long double ex = fabsl(u.x - x / l * one);
+        long double ey = fabsl(u.y - y / l * one);
+        long double ez = fabsl(u.z - z / l * one);
+        long double e = ex > ey ? (ex > ez ? ex : ez) : (ey > ez ? ey : ez);
+        if (e > max_err)
+            max_err = e;
+        past += u.x > FX_UONE || u.x < -FX_UONE || u.y > FX_UONE ||
+                u.y < -FX_UONE || u.z > FX_UONE || u.z < -FX_UONE;
+        /* Off unit length by a few ulps, then renormalised. */
+        fx_dir3 v = fx_d3(u.x + (int32_t)(rnd32() % 9) - 4,
+                          u.y + (int32_t)(rnd32() % 9) - 4,
+                          u.z + (int32_t)(rnd32() % 9) - 4);
+        fx_dir3 w = fx_d3_renorm(v);
+        long double lv = sqrtl((long double)v.x * v.x +
+                               (long double)v.y * v.y +
+                               (long double)v.z * v.z);
+        long double rx = fabsl(w.x - v.x / lv * one);
+        long double ry = fabsl(w.y - v.y / lv * one);
+        long double rz = fabsl(w.z - v.z / lv * one);
+        long double r = rx > ry ? (rx > rz ? rx : rz) : (ry > rz ? ry : rz);
+        if (r > max_renorm)
+            max_renorm = r;
+    }
+    if (!CHECK(max_err <= 2.5L) || !CHECK(max_renorm <= 2.5L) ||
+        !CHECK(past == 0))
+        printf("    normalise %.3Lf ulps, renormalise %.3Lf, %ld past 1\n",
+               max_err, max_renorm, past);
+    for (int s = 0; s < 31; s++) {
+        int32_t v = (int32_t)(((uint32_t)1 << s) | (s ? 1u : 0u));
+        fx_dir3 px = fx_d3_normalize(fx_v3(v, 0, 0));
+        fx_dir3 ny = fx_d3_normalize64(0, -(int64_t)v << 20, 0);
+        CHECK(px.x == FX_UONE && px.y == 0 && px.z == 0);
+        CHECK(ny.x == 0 && ny.y == -FX_UONE && ny.z == 0);
+    }
+    fx_dir3 zero = fx_d3_normalize64(0, 0, 0);
+    CHECK(zero.x == 0 && zero.y == 0 && zero.z == 0);
+    /* Quad normals along an axis are exact (the tie with plane_t). */
+    fx_dir3 n = fx_d3_cross_unit(fx_v3(0, 0, FX_INT(40)),
+                                 fx_v3(FX_INT(40), 0, 0));
+    CHECK(n.x == 0 && n.y == FX_UONE && n.z == 0);
+}
+
 int main(void)
 {
+    test_unit_vectors();
     test_componentwise();
     test_madd_unit();
     test_dot_cross_len2();
