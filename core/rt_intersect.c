@@ -33,6 +33,39 @@
  * squared half chord) and h = c - (o + tca d). Cheap rejections come first:
  * most tests end at the first comparison. */
 
+/* Near a bounding sphere's silhouette, whether |h| < r is decided by the
+ * Q16.16 rounding of h (about an ulp per component), that is, by up to
+ * 1e-5 units. There h is formed again with e more fraction bits, as many
+ * as keep r 2^e within 30 bits (at most those the unit vector has):
+ * oc - t d with the rounded t, whose error is along d and so changes
+ * |h|^2 only by its square. Returns 0 for a miss, else 1 with the squared
+ * half chord r^2 - |h|^2 as Q32.32 in *disc. */
+RT_NOINLINE static int bsphere_fine(const fx_vec3 *c, int64_t t,
+                                    const rt_ray *ray, fx_t r,
+                                    uint64_t *disc)
+{
+    const int64_t ox = (int64_t)c->x - ray->o.x;
+    const int64_t oy = (int64_t)c->y - ray->o.y;
+    const int64_t oz = (int64_t)c->z - ray->o.z;
+    int e = fx_clz32((uint32_t)r) - 2; /* >= 1, as r < 2^29 */
+    if (e > FX_USHIFT)
+        e = FX_USHIFT;
+    const int sh = FX_UBITS - e; /* >= 16 */
+    const int64_t sc = (int64_t)1 << e, half = (int64_t)1 << (sh - 1);
+    /* |h| is near r, so each fine component is below 2^30 + 2^e. */
+    const int64_t hx = ox * sc - ((t * ray->d.x + half) >> sh);
+    const int64_t hy = oy * sc - ((t * ray->d.y + half) >> sh);
+    const int64_t hz = oz * sc - ((t * ray->d.z + half) >> sh);
+    const uint64_t h2 = (uint64_t)(hx * hx) + (uint64_t)(hy * hy) +
+                        (uint64_t)(hz * hz);
+    const uint64_t re = (uint64_t)r << e;
+    const uint64_t r2 = re * re;
+    if (h2 > r2)
+        return 0;
+    *disc = (r2 - h2) >> (2 * e);
+    return 1;
+}
+
 /* small: the object's centre and radius are fx_v3_small (rt_object.small).
  * Inlined into each shape's test: the call and its nine arguments cost
  * more than the common rejection itself. */
@@ -68,7 +101,11 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         int32_t hx = ox - (int32_t)((fx_imul64(t32, ray->d.x) + UHALF) >> FX_UBITS);
         int32_t hy = oy - (int32_t)((fx_imul64(t32, ray->d.y) + UHALF) >> FX_UBITS);
         int32_t hz = oz - (int32_t)((fx_imul64(t32, ray->d.z) + UHALF) >> FX_UBITS);
-        if (hx > r || hx < -r || hy > r || hy < -r || hz > r || hz < -r)
+        /* One ulp of slack (r < 2^29 here): the rounding of h cannot
+         * decide this. */
+        const int32_t rs = r + 1;
+        if (hx > rs || hx < -rs || hy > rs || hy < -rs || hz > rs ||
+            hz < -rs)
             return 0;
         h[0] = hx;
         h[1] = hy;
@@ -88,22 +125,32 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         h[0] = ox - ((t * ray->d.x + UHALF) >> FX_UBITS);
         h[1] = oy - ((t * ray->d.y + UHALF) >> FX_UBITS);
         h[2] = oz - ((t * ray->d.z + UHALF) >> FX_UBITS);
-        if (h[0] > r || h[0] < -r || h[1] > r || h[1] < -r || h[2] > r ||
-            h[2] < -r)
+        const int64_t rs = (int64_t)r + 1;
+        if (h[0] > rs || h[0] < -rs || h[1] > rs || h[1] < -rs ||
+            h[2] > rs || h[2] < -rs)
             return 0;
     }
     uint64_t h2 = (uint64_t)(h[0] * h[0]) + (uint64_t)(h[1] * h[1]) +
                   (uint64_t)(h[2] * h[2]);
     uint64_t r2 = (uint64_t)(fx_imul64(r, r));
-    if (h2 > r2)
-        return 0;
+    /* |h|^2 is off by at most about 2 |h| + 1 (Q32.32): a ray that close
+     * to the silhouette is decided by bsphere_fine. */
+    const uint64_t margin = 2 * (uint64_t)r + 8;
+    if (FX_USHIFT > 0 && r < ((fx_t)1 << 29) &&
+        (h2 > r2 ? h2 - r2 : r2 - h2) <= margin) {
+        if (!bsphere_fine(cp, t, ray, r, disc))
+            return 0;
+    } else {
+        if (h2 > r2)
+            return 0;
+        *disc = r2 - h2;
+    }
     *tca = t;
-    *disc = r2 - h2;
     return 1;
 }
 
 /* Distance along the unit component d (d != 0) from coordinate o to the
- * plane at coordinate p, (p - o) / d truncated: hit_quad's value for an
+ * plane at coordinate p, (p - o) / d rounded to nearest: hit_quad's value for an
  * axis-aligned quad, so that shapes lying in such a quad's plane tie with
  * it exactly. A distance of 2^32 or more (beyond any tmax) comes back as
  * INT64_MAX or -INT64_MAX. */
@@ -117,8 +164,11 @@ static int64_t plane_t(int64_t p, fx_t o, int32_t d)
      * 2^32 or more, as |d| <= 2^FX_UBITS. */
     if ((adp >> 32) != 0 || ((adp << FX_UBITS) >> 32) >= ud)
         return neg ? -INT64_MAX : INT64_MAX;
-    uint64_t un = adp << FX_UBITS;
-    int64_t q = fx_udiv64_32(un, ud); /* the same truncation as C's / */
+    /* Rounded: floor((n + floor(d / 2)) / d), as in hit_quad. */
+    uint64_t un = (adp << FX_UBITS) + (ud >> 1);
+    if ((un >> 32) >= ud)
+        return neg ? -INT64_MAX : INT64_MAX;
+    int64_t q = fx_udiv64_32(un, ud);
     return neg ? -q : q;
 }
 
@@ -166,7 +216,7 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
                         : fx_pd_dot_raw(r->o, o->n));
     if ((num < 0) != (den < 0))
         return 0;
-    /* t = num 2^FX_UBITS / den in Q16.16, both of one sign, truncated: a
+    /* t = num 2^FX_UBITS / den in Q16.16, both of one sign, rounded: a
      * 64/32 division by den's top 32 bits (2^-31 relative, so grazing
      * rays keep their precision). A quotient of 2^32 or more is beyond
      * any tmax. The sd bits den drops are zero for an axis-aligned quad
@@ -180,7 +230,12 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
     const int lsh = FX_UBITS - sd; /* 0..FX_UBITS, as |den| <= 2^61 */
     if ((un >> (32 - lsh)) >= ud)
         return 0;
-    uint32_t tq = fx_udiv64_32(un << lsh, ud);
+    /* Rounded to nearest; for an axis-aligned quad ud is even or sd = 0,
+     * so this is plane_t's floor((n + floor(d / 2)) / d) exactly. */
+    const uint64_t n2 = (un << lsh) + (ud >> 1);
+    if ((n2 >> 32) >= ud)
+        return 0;
+    uint32_t tq = fx_udiv64_32(n2, ud);
     if ((int64_t)tq <= tmin || (int64_t)tq >= tmax)
         return 0;
     const fx_t tt = (fx_t)tq; /* below tmax, so it fits */
@@ -188,7 +243,13 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
                  ((fx_imul64(tt, r->d.x) + UHALF) >> FX_UBITS);
     int64_t qz = (int64_t)r->o.z - o->a.z +
                  ((fx_imul64(tt, r->d.z) + UHALF) >> FX_UBITS);
-    int64_t u, v;
+    /* A point of the quad is a + s e1 + t e2 with s, t in [0, 1]: each
+     * component of q = p - a is below 2^32. Past that it is outside, and
+     * below it each product with a unit axis is below 2^62. */
+    const int64_t qlim = (int64_t)1 << 32;
+    if (qx >= qlim || qx <= -qlim || qz >= qlim || qz <= -qlim)
+        return 0;
+    int64_t u, v; /* 16 + FX_UBITS fraction bits */
     if (flat == 1) { /* pu = (0, 0, pu.z), pv = (pv.x, 0, 0) */
         u = qz * o->pu.z;
         v = qx * o->pv.x;
@@ -207,19 +268,22 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
             v = fx_imul64(x, o->pv.x) + fx_imul64(y, o->pv.y) +
                 fx_imul64(z, o->pv.z);
         } else {
+            if (qy >= qlim || qy <= -qlim)
+                return 0;
+            /* |q| < 2^33 and |pu| = 1: every partial sum below 2^63. */
             u = qx * o->pu.x + qy * o->pu.y + qz * o->pu.z;
             v = qx * o->pv.x + qy * o->pv.y + qz * o->pv.z;
         }
     }
-    /* Inclusive by RT_QUAD_SLACK ulps plus 2^-17 of the quad's size: pu
-     * and pv are rounded to 2^-16, so (p - a).pu at a shared edge can land
-     * just outside both neighbours, by an amount that grows with the
-     * quad. Adjacent quads overlap by that much instead of leaving a
-     * crack. */
-    const int64_t sl = ((int64_t)RT_QUAD_SLACK << 16) +
+    /* Inclusive by RT_QUAD_SLACK ulps plus 2^-(FX_UBITS + 1) of the quad's
+     * size: pu and pv are rounded to 2^-FX_UBITS, so (p - a).pu at a
+     * shared edge can land just outside both neighbours, by an amount
+     * that grows with the quad. Adjacent quads overlap by that much
+     * instead of leaving a crack. */
+    const int64_t sl = ((int64_t)RT_QUAD_SLACK << FX_UBITS) +
                        (((int64_t)o->lu + o->lv) >> 1);
-    if (u < -sl || v < -sl || u > ((int64_t)o->lu << 16) + sl ||
-        v > ((int64_t)o->lv << 16) + sl)
+    if (u < -sl || v < -sl || u > (int64_t)o->lu * FX_UONE + sl ||
+        v > (int64_t)o->lv * FX_UONE + sl)
         return 0;
     *t = tt;
     *part = 0;

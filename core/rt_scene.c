@@ -88,10 +88,10 @@ static rt_status prepare_shape(rt_object *o)
         o->n = fx_d3_cross_unit(e1, e2);
         if (o->n.x == 0 && o->n.y == 0 && o->n.z == 0)
             return RT_ERR_DEGENERATE; /* parallel edges */
-        o->pu = fx_v3_cross_unit(e2, fx_d3_raw(o->n));
-        o->pv = fx_v3_cross_unit(fx_d3_raw(o->n), e1);
-        o->lu = fx_v3_dot(e1, o->pu);
-        o->lv = fx_v3_dot(e2, o->pv);
+        o->pu = fx_d3_cross_unit(e2, fx_d3_raw(o->n));
+        o->pv = fx_d3_cross_unit(fx_d3_raw(o->n), e1);
+        o->lu = fx_pd_dot(e1, o->pu);
+        o->lv = fx_pd_dot(e2, o->pv);
         if (o->lu <= 0 || o->lv <= 0)
             return RT_ERR_DEGENERATE;
         o->dist = fx_pd_dot(o->a, o->n);

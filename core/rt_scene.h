@@ -112,7 +112,7 @@ typedef struct {
     fx_t h;           /* cylinder, cone: height */
     /* Derived by rt_object_prepare(). */
     fx_dir3 n;        /* quad: unit normal, norm(edge1 x edge2) */
-    fx_vec3 pu, pv;   /* quad: unit in-plane axes across edge2 and edge1 */
+    fx_dir3 pu, pv;   /* quad: unit in-plane axes across edge2 and edge1 */
     fx_t lu, lv;      /* quad: 0 <= (p - a).pu <= lu, 0 <= (p - a).pv <= lv */
     fx_t dist;        /* quad: n . a */
     fx_vec3 bc;       /* bounding sphere centre */

@@ -148,8 +148,8 @@ static void put_object(emitter *e, const rt_object *o)
     put_fx(e, "h", o->h);
     put(e, "/* Derived by rt_object_prepare(). */");
     put_vec(e, "n", fx_d3_raw(o->n)); /* FX_UBITS fraction bits */
-    put_vec(e, "pu", o->pu);
-    put_vec(e, "pv", o->pv);
+    put_vec(e, "pu", fx_d3_raw(o->pu));
+    put_vec(e, "pv", fx_d3_raw(o->pv));
     put_fx(e, "lu", o->lu);
     put_fx(e, "lv", o->lv);
     put_fx(e, "dist", o->dist);
