@@ -15,13 +15,22 @@
 /* Ulps (plus 2^-17 of the size) by which quads reach past their edges. */
 #define RT_QUAD_SLACK 2
 
-/* Frame ulps by which a cylinder's or cone's caps and side overlap at
- * their rims. */
+/* Cylinders and cones are solved in a frame centred on the bounding
+ * sphere and scaled by 2^-ushift, so that the sphere's radius is between
+ * 1/2 and 1 there, with RT_FRAME_BITS (rt_scene.h) fraction bits: a frame
+ * value is a world raw value times 2^(RT_FRAME_BITS - 16 - ushift). 24
+ * bits keep every product below 2^63 for cone slopes up to 64. */
+
+/* Frame ulps by which a cylinder's side reaches past its caps' planes,
+ * and world ulps (at least frame ulps) by which the caps reach past the
+ * side's radius: a cap's distance is a world value, so its point in the
+ * frame is known only to a world ulp. No ray passes between the two. */
 #define RT_RIM_SLACK 2
 
-/* Below these (raw frame units) a ray is within rounding of a cone's
- * generator direction: no linear root, and not treated as steep. */
-#define RT_LINEAR_MIN_B 256
+/* Below these (2^-8, as frame values with 16 fraction bits; see
+ * RT_FRAME_BITS) a ray is within rounding of a cone's generator
+ * direction: no linear root, and not treated as steep. */
+#define RT_LINEAR_MIN_B ((int64_t)256 << (RT_FRAME_BITS - 16))
 #define RT_STEEP_MIN_A 256
 
 /* Half of a unit vector's last bit, for products rounded to Q16.16. */
@@ -381,120 +390,179 @@ static int hit_box(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
     return 0;
 }
 
-/* Scales v by 2^-k, rounding to nearest (k may be negative). */
-static fx_t to_frame(int64_t v, int k)
+
+/* v 2^-n: rounded to nearest for n > 0, exact for n <= 0 (the callers
+ * keep v 2^-n within 64 bits). */
+static int64_t shift_round(int64_t v, int n)
 {
-    if (k <= 0)
-        return fx_sat64(v * ((int64_t)1 << -k));
-    return fx_sat64((v + ((int64_t)1 << (k - 1))) >> k);
+    if (n <= 0)
+        return v * ((int64_t)1 << -n);
+    return (v + ((int64_t)1 << (n - 1))) >> n;
 }
 
-/* World distance of a frame distance: tca + tl * 2^k. */
-static int64_t from_frame(int64_t tca, fx_t tl, int k)
+/* A product of two frame values back to RT_FRAME_BITS fraction bits,
+ * rounded to nearest. */
+static inline int64_t frame_round(int64_t v)
 {
-    if (k >= 0)
-        return tca + (int64_t)tl * ((int64_t)1 << k);
-    return tca + (((int64_t)tl + ((int64_t)1 << (-k - 1))) >> -k);
+    return (v + ((int64_t)1 << (RT_FRAME_BITS - 1))) >> RT_FRAME_BITS;
 }
 
-/* Roots of a t^2 + 2 b t + c = 0 (Q16.16), cancellation-free: q = -(b +
- * sign(b) sqrt(b^2 - ac)), roots q / a and c / q. Returns the count: one
- * root when a = 0 (a ray along a cone's generator). a, b and c are each
- * rounded to half an ulp, so b^2 - ac is known only to |b| + (|a| + |c|)/2
- * (plus the rounding of the products): a discriminant negative by less is
- * a double root (a tangent), not a miss; a wider tolerance would admit
- * rays passing beside a cone's apex. `real`: the roots are known to be
- * real (a ray steeper than a cone's side meets both nappes), so any
- * negative discriminant is rounding. */
-static int quadratic(fx_t a, fx_t b, fx_t c, int real, fx_t root[2])
+/* n 2^RT_FRAME_BITS / d, truncated, for |n| < 2^31 and d != 0 (|d| <
+ * 2^31); a quotient of 2^32 or more (256 frame units, far outside the
+ * bounding sphere) comes back as +-2^32. */
+static int64_t frame_div(int64_t n, int64_t d)
 {
+    const int neg = (n < 0) != (d < 0);
+    const uint64_t un = (uint64_t)(n < 0 ? -n : n) << RT_FRAME_BITS;
+    const uint32_t ud = (uint32_t)(d < 0 ? -d : d);
+    int64_t q = (un >> 32) >= ud ? (int64_t)1 << 32
+                                 : (int64_t)fx_udiv64_32(un, ud);
+    return neg ? -q : q;
+}
+
+/* Roots of a t^2 + 2 b t + c = 0 (RT_FRAME_BITS fraction bits),
+ * cancellation-free: q = -(b + sign(b) sqrt(b^2 - ac)), roots q / a and
+ * c / q. Returns the count: one root when a = 0 (a ray along a cone's
+ * generator). a, b and c are each rounded to half an ulp, so b^2 - ac is
+ * known only to |b| + (|a| + |c|) / 2 (plus the rounding of the
+ * products): a discriminant negative by less is a double root (a
+ * tangent), not a miss; a wider tolerance would admit rays passing beside
+ * a cone's apex. `real`: the roots are known to be real (a ray steeper
+ * than a cone's side meets both nappes), so any negative discriminant is
+ * rounding. */
+static int quadratic(int64_t a, int64_t b, int64_t c, int real,
+                     int64_t root[2])
+{
+    /* A common scale brings the coefficients within 30 bits (only a
+     * flat cone's need it); the roots do not change. */
+    const uint64_t ua = (uint64_t)(a < 0 ? -a : a);
+    const uint64_t ub = (uint64_t)(b < 0 ? -b : b);
+    const uint64_t uc = (uint64_t)(c < 0 ? -c : c);
+    const uint64_t any = ua | ub | uc;
+    const int sh = any >> 30 ? 34 - fx_clz64(any) : 0;
+    int64_t lin_min = RT_LINEAR_MIN_B;
+    if (sh > 0) {
+        a = shift_round(a, sh);
+        b = shift_round(b, sh);
+        c = shift_round(c, sh);
+        lin_min >>= sh;
+    }
     if (a == 0) {
         /* One root, -c / 2b; b and c both shrink as the ray nears the
          * generator itself, and their ratio becomes noise: none then. */
-        if (b > -RT_LINEAR_MIN_B && b < RT_LINEAR_MIN_B)
+        if (b > -lin_min && b < lin_min)
             return 0;
-        root[0] = root[1] = fx_div(fx_neg(c), 2 * b); /* |b| < 2^30 */
+        root[0] = root[1] = frame_div(-c, 2 * b);
         return 1;
     }
-    int64_t disc = fx_imul64(b, b) - fx_imul64(a, c);
+    int64_t disc = b * b - a * c; /* each product below 2^60 */
     if (disc < 0) {
-        if (!real && disc < -((int64_t)fx_abs(b) +
-                              ((int64_t)fx_abs(a) + fx_abs(c)) / 2 + 1))
+        int64_t aa = a < 0 ? -a : a, ab = b < 0 ? -b : b;
+        int64_t ac = c < 0 ? -c : c;
+        if (!real && disc < -(ab + (aa + ac) / 2 + 1))
             return 0;
         disc = 0;
     }
-    fx_t sq = (fx_t)fx_sqrt_q32((uint64_t)disc);
-    fx_t q = b >= 0 ? fx_neg(fx_add(b, sq)) : fx_sub(sq, b);
+    const int64_t sq = (int64_t)fx_isqrt64((uint64_t)disc);
+    const int64_t q = b >= 0 ? -(b + sq) : sq - b; /* |q| < 2^31 */
     if (q == 0) {
         root[0] = root[1] = 0;
         return 1;
     }
-    fx_t r0 = fx_div(q, a), r1 = fx_div(c, q);
+    int64_t r0 = frame_div(q, a), r1 = frame_div(c, q);
     root[0] = r0 < r1 ? r0 : r1;
     root[1] = r0 < r1 ? r1 : r0;
     return 2;
 }
 
-/* Cylinder (kind RT_CYLINDER) or cone, in the object's unit frame. */
+/* Cylinder (kind RT_CYLINDER) or cone, in the object's frame. */
 static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
                        fx_t tmax, fx_t *t, uint8_t *part)
 {
     int64_t tca, h[3];
     uint64_t disc;
-    fx_t best = tmax, root[2];
-    int k = o->ushift, found = 0, cone = o->kind == RT_CONE;
+    fx_t best = tmax;
+    int64_t root[2];
+    int found = 0, cone = o->kind == RT_CONE;
     if (!bsphere(&o->bc, o->br, o->small, r, tmin, tmax, &tca, &disc, h))
         return 0;
-    /* Closest point on the ray, relative to the centre, in the frame. */
-    fx_t px = to_frame(-h[0], k), py = to_frame(-h[1], k);
-    fx_t pz = to_frame(-h[2], k);
-    /* The frame's quadratic works in Q16.16: the direction rounded to it
-     * (the closest point above already used all of its bits). */
-    fx_t dx = fx_u_to_fx(r->d.x), dy = fx_u_to_fx(r->d.y);
-    fx_t dz = fx_u_to_fx(r->d.z);
-    fx_t ur = o->ur, uh = o->uh;
+    /* Frame value = world raw value 2^sf. */
+    const int sf = RT_FRAME_BITS - 16 - o->ushift;
+    /* The closest point p = o + tca d - bc in the frame, from the exact
+     * o - bc and tca d (not bsphere's rounded h). */
+    const int dsh = FX_UBITS - sf;
+    const int64_t px64 = shift_round(tca * r->d.x, dsh) -
+                         shift_round((int64_t)o->bc.x - r->o.x, -sf);
+    const int64_t py64 = shift_round(tca * r->d.y, dsh) -
+                         shift_round((int64_t)o->bc.y - r->o.y, -sf);
+    const int64_t pz64 = shift_round(tca * r->d.z, dsh) -
+                         shift_round((int64_t)o->bc.z - r->o.z, -sf);
+    /* Frame values near the sphere are below 2^25: 32-bit operands. */
+    const int32_t px = (int32_t)px64, py = (int32_t)py64, pz = (int32_t)pz64;
+    /* The direction with RT_FRAME_BITS fraction bits. */
+    const int ush = FX_UBITS - RT_FRAME_BITS;
+    const int32_t dx = (int32_t)shift_round(r->d.x, ush);
+    const int32_t dy = (int32_t)shift_round(r->d.y, ush);
+    const int32_t dz = (int32_t)shift_round(r->d.z, ush);
+    /* Radius, base and top in the frame, exact from the object's fields
+     * (the centre bc.y is a.y + h/2 rounded down). */
+    const int32_t ur = (int32_t)shift_round(o->r, -sf);
+    const int32_t yb = (int32_t)shift_round((int64_t)o->a.y - o->bc.y, -sf);
+    const int32_t yt =
+        (int32_t)shift_round((int64_t)o->a.y + o->h - o->bc.y, -sf);
+    const int64_t one = (int64_t)1 << RT_FRAME_BITS;
+    const int64_t rim = (int64_t)RT_RIM_SLACK << (sf > 0 ? sf : 0); /* caps */
 
-    /* Side: x^2 + z^2 = R(y)^2, R = ur (cylinder) or k (uh - y) (cone). */
-    fx_t a = fx_from_q32(fx_imul64(dx, dx) + fx_imul64(dz, dz));
-    fx_t b = fx_from_q32(fx_imul64(px, dx) + fx_imul64(pz, dz));
-    fx_t c = fx_from_q32(fx_imul64(px, px) + fx_imul64(pz, pz) -
-                         fx_imul64(ur, ur));
+    /* Side: x^2 + z^2 = R(y)^2, R = ur (cylinder) or k (yt - y) (cone). */
+    const int64_t pp = fx_imul64(px, px) + fx_imul64(pz, pz);
+    int64_t a = frame_round(fx_imul64(dx, dx) + fx_imul64(dz, dz));
+    int64_t b = frame_round(fx_imul64(px, dx) + fx_imul64(pz, dz));
+    int64_t c = frame_round(pp - fx_imul64(ur, ur));
     if (cone) {
-        fx_t kdy = fx_mul(o->k, dy), ky = fx_mul(o->k, fx_sub(uh, py));
-        a = fx_sub(a, fx_mul(kdy, kdy));
-        b = fx_add(b, fx_mul(ky, kdy));
-        c = fx_from_q32(fx_imul64(px, px) + fx_imul64(pz, pz) -
-                        fx_imul64(ky, ky));
+        /* o->k is the slope with RT_FRAME_BITS fraction bits, below 2^30;
+         * ky below 2^31 (|yt - py| < 2^25). */
+        const int32_t kdy = (int32_t)frame_round(fx_imul64(o->k, dy));
+        const int64_t ky = frame_round(fx_imul64(o->k, yt - py));
+        a -= frame_round(fx_imul64(kdy, kdy));
+        b += frame_round(ky * kdy);
+        c = frame_round(pp - ky * ky);
     }
     /* Clearly steeper than the side (not within rounding of a
      * generator's direction, where one root is far and saturates). */
-    int steep = cone && a < -RT_STEEP_MIN_A;
+    const int steep =
+        cone && a < -((int64_t)RT_STEEP_MIN_A << (RT_FRAME_BITS - 16));
     int n = quadratic(a, b, c, steep, root);
     if (steep && n == 2) {
         /* A ray steeper than the side meets each nappe once: the root
          * with the lower y is on the cone, however near the apex rounding
-         * puts it (a y <= uh threshold there lets rays through). */
+         * puts it (a y <= top threshold there lets rays through). */
         if ((dy > 0) != (root[0] < root[1]))
             root[0] = root[1];
         n = 1;
     }
     for (int i = 0; i < n; i++) {
-        fx_t y = fx_add(py, fx_mul(root[i], dy));
+        /* Roots of a real hit lie within the bounding sphere's chord. */
+        if (root[i] > 4 * one || root[i] < -4 * one)
+            continue;
+        int64_t y = py + frame_round(root[i] * dy);
         /* The side reaches RT_RIM_SLACK frame ulps past each cap's
          * plane, as the caps reach past the side's radius below: the
          * two are rounded separately, and no ray may pass between. A
          * cone's apex meets no cap, so it gets no slack: past it lies
          * the mirrored nappe. */
-        if (y < -uh - RT_RIM_SLACK ||
-            (y > uh + (cone ? 0 : RT_RIM_SLACK) && !steep))
+        if (y < yb - RT_RIM_SLACK ||
+            (y > yt + (cone ? 0 : RT_RIM_SLACK) && !steep))
             continue;
-        if (take(from_frame(tca, root[i], k), tmin, &best)) {
+        /* World distance: tca + root 2^(ushift - (F - 16)). */
+        if (take(tca + shift_round(root[i],
+                                   RT_FRAME_BITS - 16 - o->ushift),
+                 tmin, &best)) {
             *part = 0;
             found = 1;
             break;
         }
     }
-    /* Caps: discs at y = -uh (bottom) and y = +uh (top, cylinder only). */
+    /* Caps: discs at the base (bottom) and the top (cylinder only). */
     if (r->d.y != 0) {
         for (int cap = 0; cap < 2; cap++) {
             if (!(o->caps & (cap ? RT_CAP_TOP : RT_CAP_BOTTOM)))
@@ -503,15 +571,16 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
              * y = const: a cap in a floor quad's plane (a shape standing
              * on the floor) gives the very same t, so the tie goes to the
              * earlier object instead of flipping with rounding. */
-            int64_t cy = cap ? 2 * (int64_t)o->bc.y - o->a.y : o->a.y;
+            int64_t cy = cap ? (int64_t)o->a.y + o->h : o->a.y;
             int64_t tw = plane_t(cy, r->o.y, r->d.y);
             if (tw <= tmin || tw >= best)
-                continue; /* take() would refuse it; keeps tw - tca small */
-            fx_t tl = to_frame(tw - tca, k);
-            fx_t x = fx_add(px, fx_mul(tl, dx));
-            fx_t z = fx_add(pz, fx_mul(tl, dz));
-            if (fx_imul64(x, x) + fx_imul64(z, z) >
-                fx_imul64(ur, ur) + (int64_t)ur * (2 * RT_RIM_SLACK))
+                continue; /* take() would refuse it */
+            if (tw - tca > o->br || tca - tw > o->br)
+                continue; /* outside the bounding sphere; keeps tl small */
+            const int64_t tl = shift_round(tw - tca, -sf);
+            const int64_t x = px + frame_round(tl * dx);
+            const int64_t z = pz + frame_round(tl * dz);
+            if (x * x + z * z > fx_imul64(ur, ur) + ur * (2 * rim))
                 continue;
             if (take(tw, tmin, &best)) {
                 *part = (uint8_t)(1 + cap);
@@ -563,8 +632,18 @@ int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
 fx_dir3 rt_normal(const rt_object *o, fx_vec3 p, uint8_t part)
 {
     switch (o->kind) {
-    case RT_SPHERE:
-        return fx_d3_normalize(fx_v3_sub(p, o->a));
+    case RT_SPHERE: {
+        /* (p - a) / r, then one Newton step (|p - a| is r to within the
+         * rounding of p, a relative 2^-16 / r; fx_d3_renorm normalises in
+         * full when that is more than 2^-15). */
+        const int sh = 33 - fx_clz32((uint32_t)o->r); /* b + 1 */
+        const int64_t half = (int64_t)1 << (sh - 1);
+        const fx_vec3 v = fx_v3_sub(p, o->a);
+        return fx_d3_renorm(
+            fx_d3((int32_t)((fx_iumul64(v.x, o->rinv) + half) >> sh),
+                  (int32_t)((fx_iumul64(v.y, o->rinv) + half) >> sh),
+                  (int32_t)((fx_iumul64(v.z, o->rinv) + half) >> sh)));
+    }
     case RT_QUAD:
         return o->n;
     case RT_BOX: {
@@ -587,7 +666,9 @@ fx_dir3 rt_normal(const rt_object *o, fx_vec3 p, uint8_t part)
                                          (uint64_t)(fx_imul64(z, z)));
             if (rho == 0)
                 return fx_d3(0, FX_UONE, 0); /* apex */
-            y = fx_mul(o->k, rho);
+            /* y = k rho, o->k with RT_FRAME_BITS fraction bits. */
+            return fx_d3_normalize64(x, frame_round(fx_imul64(o->k, rho)),
+                                     z);
         }
         return fx_d3_normalize(fx_v3(x, y, z));
     }

@@ -54,9 +54,9 @@ static rt_status upright_bounds(rt_object *o)
     while (k <= 0 && k > -15 && ((int64_t)o->br << -k) <= FX_HALF)
         k--;
     o->ushift = (int8_t)k;
-    o->ur = scale_pow2(o->r, k);
-    o->uh = scale_pow2(hh, k);
-    if (o->ur == 0 || o->uh == 0)
+    /* Radius and half height with 16 fraction bits in the frame: both
+     * must be nonzero (rt_parse_obj.c states the limit). */
+    if (scale_pow2(o->r, k) == 0 || scale_pow2(hh, k) == 0)
         return RT_ERR_DEGENERATE;
     return RT_OK;
 }
@@ -80,6 +80,12 @@ static rt_status prepare_shape(rt_object *o)
         o->bc = o->a;
         o->br = o->r;
         o->convex = 1;
+        {
+            /* (2^(31 + b) - 1) / r is below 2^32 as r >= 2^(b - 1). */
+            const int b = 32 - fx_clz32((uint32_t)o->r);
+            o->rinv = fx_udiv64_32(((uint64_t)1 << (31 + b)) - 1u,
+                                   (uint32_t)o->r);
+        }
         return RT_OK;
     case RT_QUAD: {
         fx_vec3 e1 = o->b, e2 = o->c;
@@ -137,9 +143,16 @@ static rt_status prepare_shape(rt_object *o)
         o->convex = 1; /* as a cylinder: one nappe's solid is convex */
         if (o->r <= 0 || o->h <= 0)
             return RT_ERR_DEGENERATE;
-        o->k = fx_div(o->r, o->h);
-        if (o->k > RT_MAX_CONE_SLOPE || o->k == 0)
-            return RT_ERR_DEGENERATE;
+        {
+            fx_t k16 = fx_div(o->r, o->h);
+            if (k16 > RT_MAX_CONE_SLOPE || k16 == 0)
+                return RT_ERR_DEGENERATE;
+        }
+        /* The slope with RT_FRAME_BITS fraction bits, to nearest: r / h
+         * <= 64 keeps it below 2^30. */
+        o->k = (fx_t)fx_udiv64_32(((uint64_t)(uint32_t)o->r << RT_FRAME_BITS) +
+                                      (uint32_t)o->h / 2,
+                                  (uint32_t)o->h);
         return upright_bounds(o);
     default:
         return RT_ERR_ARG;

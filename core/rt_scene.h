@@ -94,6 +94,10 @@ typedef enum {
 #define RT_CAP_BOTTOM 1u
 #define RT_CAP_TOP 2u
 
+/* Fraction bits of the frame cylinders and cones are solved in
+ * (rt_intersect.c), and of a cone's slope rt_object.k. */
+#define RT_FRAME_BITS 24
+
 typedef struct {
     uint8_t kind;     /* rt_kind */
     uint8_t material; /* index into rt_scene.mat */
@@ -120,8 +124,10 @@ typedef struct {
     int8_t ushift;    /* cylinders and cones are solved in the frame centred
                          on bc and scaled by 2^-ushift (exact), which brings
                          br into (1/2, 1] */
-    fx_t ur, uh;      /* cylinder, cone: radius and half height in that frame */
-    fx_t k;           /* cone: slope r / h */
+    uint32_t rinv;    /* sphere: (2^(31 + b) - 1) / r, b the bit length of
+                         r: the normal is (p - a) rinv / 2^(b + 1) */
+    fx_t k;           /* cone: slope r / h with RT_FRAME_BITS fraction bits
+                         (not Q16.16) */
 } rt_object;
 
 typedef struct {

@@ -156,8 +156,7 @@ static void put_object(emitter *e, const rt_object *o)
     put_vec(e, "bc", o->bc);
     put_fx(e, "br", o->br);
     put(e, ".ushift = %d,", o->ushift);
-    put_fx(e, "ur", o->ur);
-    put_fx(e, "uh", o->uh);
+    put_uint(e, "rinv", o->rinv);
     put_fx(e, "k", o->k);
 }
 
