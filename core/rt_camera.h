@@ -61,10 +61,12 @@ static inline int32_t rt_cam_col_k(unsigned width, unsigned n, unsigned x,
 /* w + sy up for a sample row at offset sy (rt_cam_soff), exact. */
 static inline rt_cam_ray rt_cam_row_base(const rt_cam_frame *cf, int32_t sy)
 {
+    const int64_t one = (int64_t)1 << cf->fbits; /* w 2^fbits, by a product:
+                                                 w may be negative */
     rt_cam_ray b;
-    b.x = ((int64_t)cf->w.x << cf->fbits) + fx_imul64(cf->up.x, sy);
-    b.y = ((int64_t)cf->w.y << cf->fbits) + fx_imul64(cf->up.y, sy);
-    b.z = ((int64_t)cf->w.z << cf->fbits) + fx_imul64(cf->up.z, sy);
+    b.x = cf->w.x * one + fx_imul64(cf->up.x, sy);
+    b.y = cf->w.y * one + fx_imul64(cf->up.y, sy);
+    b.z = cf->w.z * one + fx_imul64(cf->up.z, sy);
     return b;
 }
 

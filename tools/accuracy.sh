@@ -5,12 +5,15 @@
 # (`make accuracy` runs it). Needs gcc, make, awk, arm-none-eabi-gcc and
 # qemu-system-arm; nothing else.
 #
-# For each accuracy setting (RT_ACCURACY 0 fast, 1 default, 2 precise) and
-# scene: instructions per pixel on Cortex-M3 and M0 (QEMU -icount, exact),
-# host time per pixel (median of ACC_RUNS runs, noisy), and the error
-# against the double reference (fixtrace --reference). Also spp and depth
-# for the default setting on the seed, and the reference renderer itself
-# as firmware in soft double and soft float (bench/softref).
+# For each precision of unit vectors (RT_UNIT_BITS 16, 20, 24 and the
+# default 30) and scene: instructions per pixel on Cortex-M3 and M0 (QEMU
+# -icount, exact), host time per pixel (median of ACC_RUNS runs, noisy),
+# and the error against the double reference (fixtrace --reference). For
+# the default also the work knobs on the seed (spp, adaptive
+# anti-aliasing, depth), measured against the ideal image too (the
+# reference at 16 spp and the scene's depth); the reference renderer
+# itself as firmware in soft double and soft float (bench/softref); and
+# the seed's picture and error heat map at each precision (docs/img/).
 #
 # Environment: ACC_JOBS (QEMU runs at once, default 2), ACC_RUNS (host
 # timing runs, default 7), ACC_WIDTH / ACC_HEIGHT (default 320 x 240).
@@ -27,8 +30,13 @@ RUNS=${ACC_RUNS:-7}
 W=${ACC_WIDTH:-320}
 H=${ACC_HEIGHT:-240}
 WORK=build/accuracy
-SCENES="seed glass primitives"
-NAMES=(fast default precise)
+SCENES="seed mirrors glass textures"
+BITS="16 20 24 30"
+DEFAULT=30
+# The work knobs of the default on the seed: "tag spp adaptive".
+KNOBS="seed-s4 4 0
+seed-s16 16 0
+seed-a8 16 8"
 
 # ---- One measurement job (run in parallel by xargs) -------------------------
 
@@ -37,21 +45,22 @@ log_counts() {
     awk '/^instructions /{i=$2} /^pixels /{p=$2} END{print i+0, p+0}' "$1"
 }
 
-# fw BOARD ACC: every configuration of one fixed-point firmware, one after
-# the other in one build directory (only the scene and main.c rebuild).
+# fw BOARD BITS: every configuration of one fixed-point firmware, one
+# after the other in one build directory (only the scene and main.c
+# rebuild).
 job_fw() {
-    local board=$1 acc=$2 dir=$WORK/fw-$1-acc$2 cfg tag scene spp
-    while read -r tag scene spp; do
+    local board=$1 u=$2 dir=$WORK/fw-$1-u$2 tag scene spp ad
+    while read -r tag scene spp ad; do
         if ! $MK -s qemu BOARD="$board" FW_BUILD="$dir" \
-            FW_DEFS="-DRT_ACCURACY=$acc" SCENE="$scene" WIDTH="$W" \
-            HEIGHT="$H" SPP="$spp" >"$dir.$tag.out" 2>&1; then
-            echo "accuracy: $board acc$acc $tag failed:" >&2
+            FW_DEFS="-DRT_UNIT_BITS=$u" SCENE="$scene" WIDTH="$W" \
+            HEIGHT="$H" SPP="$spp" ADAPTIVE="$ad" >"$dir.$tag.out" 2>&1; then
+            echo "accuracy: $board u$u $tag failed:" >&2
             tail -n 5 "$dir.$tag.out" >&2
             return 1
         fi
-        log_counts "$dir/qemu.log" >"$WORK/res/fw-$board-$acc-$tag"
-        cp "$dir/out.ppm" "$WORK/img/fw-$board-$acc-$tag.ppm"
-    done < <(configs "$acc")
+        log_counts "$dir/qemu.log" >"$WORK/res/fw-$board-$u-$tag"
+        cp "$dir/out.ppm" "$WORK/img/fw-$board-$u-$tag.ppm"
+    done < <(configs "$u")
 }
 
 # sr VARIANT SCENES...: the reference renderer as firmware.
@@ -70,18 +79,19 @@ job_sr() {
     done
 }
 
-# The configurations of a setting: "tag scene-file spp". Every setting
-# renders the three scenes; the default also the spp and depth axes.
+# The configurations of a setting: "tag scene-file spp adaptive". Every
+# setting renders the scenes; the default also the work knobs.
 configs() {
-    local s d
+    local s d tag spp ad
     for s in $SCENES; do
-        echo "$s scenes/$s.scene 1"
+        echo "$s scenes/$s.scene 1 0"
     done
-    if [ "$1" = 1 ]; then
-        echo "seed-s4 scenes/seed.scene 4"
-        echo "seed-s16 scenes/seed.scene 16"
+    if [ "$1" = "$DEFAULT" ]; then
+        while read -r tag spp ad; do
+            echo "$tag scenes/seed.scene $spp $ad"
+        done <<<"$KNOBS"
         for d in 0 1 2 3; do
-            echo "seed-d$d $WORK/scenes/seed-d$d.scene 1"
+            echo "seed-d$d $WORK/scenes/seed-d$d.scene 1 0"
         done
     fi
 }
@@ -117,25 +127,39 @@ for d in 0 1 2 3; do
 done
 
 echo "accuracy: host builds"
-for acc in 0 1 2; do
-    $MK -s -j"$JOBS" SANITIZE= HOST_BUILD=build/posix-acc$acc \
-        RT_DEFS=-DRT_ACCURACY=$acc build/posix-acc$acc/fixtrace
+for u in $BITS; do
+    $MK -s -j"$JOBS" SANITIZE= HOST_BUILD=build/posix-u$u \
+        RT_DEFS=-DRT_UNIT_BITS=$u build/posix-u$u/fixtrace
 done
-REF=build/posix-acc1/fixtrace
+REF=build/posix-u$DEFAULT/fixtrace
 
-# Scene file and spp of a tag (seed, seed-s4, seed-d2, glass, ...).
+# Scene file, spp and adaptive threshold of a tag (seed, seed-s4,
+# seed-a8, seed-d2, glass, ...).
 tag_scene() {
     case $1 in
     seed-d*) echo "$WORK/scenes/$1.scene" ;;
-    seed-s*) echo scenes/seed.scene ;;
+    seed-*) echo scenes/seed.scene ;;
     *) echo "scenes/$1.scene" ;;
     esac
 }
 tag_spp() {
     case $1 in
     seed-s*) echo "${1#seed-s}" ;;
+    seed-a*) echo 16 ;;
     *) echo 1 ;;
     esac
+}
+tag_ad() {
+    case $1 in
+    seed-a*) echo "${1#seed-a}" ;;
+    *) echo 0 ;;
+    esac
+}
+# The fixtrace options of a tag.
+tag_opts() {
+    local o="-s $(tag_spp "$1")"
+    [ "$(tag_ad "$1")" -gt 0 ] && o="$o --adaptive $(tag_ad "$1")"
+    echo "$o"
 }
 
 echo "accuracy: host renders and references"
@@ -143,19 +167,24 @@ for tag in $SCENES seed-s4 seed-s16 seed-d0 seed-d1 seed-d2 seed-d3; do
     $REF -q --reference -W "$W" -H "$H" -s "$(tag_spp "$tag")" \
         -o "$WORK/img/ref-$tag.ppm" "$(tag_scene "$tag")"
 done
-for acc in 0 1 2; do
-    for tag in $(configs "$acc" | awk '{print $1}'); do
-        build/posix-acc$acc/fixtrace -q -W "$W" -H "$H" \
-            -s "$(tag_spp "$tag")" -o "$WORK/img/host-$acc-$tag.ppm" \
-            "$(tag_scene "$tag")"
+# Adaptive anti-aliasing is a fixed-point shortcut to 16 spp: its
+# reference is the full 16 spp one.
+cp "$WORK/img/ref-seed-s16.ppm" "$WORK/img/ref-seed-a8.ppm"
+# The ideal image the work knobs are held to: 16 spp, the scene's depth.
+IDEAL=$WORK/img/ref-seed-s16.ppm
+for u in $BITS; do
+    for tag in $(configs "$u" | awk '{print $1}'); do
+        # shellcheck disable=SC2046
+        build/posix-u$u/fixtrace -q -W "$W" -H "$H" $(tag_opts "$tag") \
+            -o "$WORK/img/host-$u-$tag.ppm" "$(tag_scene "$tag")"
     done
 done
 
 echo "accuracy: firmware runs under QEMU ($JOBS at once)"
 {
-    for acc in 1 0 2; do
-        echo "fw m0 $acc"
-        echo "fw an385 $acc"
+    for u in $DEFAULT 16 20 24; do
+        echo "fw m0 $u"
+        echo "fw an385 $u"
     done
     echo "sr m0-f64 seed"
     echo "sr m3-f64 $SCENES"
@@ -176,14 +205,15 @@ host_time() { # fixtrace-binary tag [--reference]: median microseconds/pixel
     local bin=$1 tag=$2 i
     shift 2
     for ((i = 0; i < RUNS; i++)); do
-        "$bin" --stats "$@" -W "$W" -H "$H" -s "$(tag_spp "$tag")" \
+        # shellcheck disable=SC2046
+        "$bin" --stats "$@" -W "$W" -H "$H" $(tag_opts "$tag") \
             -o "$WORK/host/t.ppm" "$(tag_scene "$tag")" 2>&1 |
             awk '/^render_seconds /{print $2}'
     done | median | awk -v p=$((W * H)) '{printf "%.3f\n", $1 * 1e6 / p}'
 }
-for acc in 0 1 2; do
-    for tag in $(configs "$acc" | awk '{print $1}'); do
-        host_time build/posix-acc$acc/fixtrace "$tag" >"$WORK/res/host-$acc-$tag"
+for u in $BITS; do
+    for tag in $(configs "$u" | awk '{print $1}'); do
+        host_time build/posix-u$u/fixtrace "$tag" >"$WORK/res/host-$u-$tag"
     done
 done
 for tag in $SCENES; do
@@ -206,26 +236,34 @@ ipp() { # instructions per pixel from a result file, or -
 }
 
 # One row per line, tab-separated: label scene spp depth m3 m0 m4f host
-# psnr maxerr bad identical(firmware == host image)
+# psnr maxerr bad identical(firmware == host image) adaptive
+# psnr-against-the-ideal (seed only)
 TSV=$WORK/results.tsv
 : >"$TSV"
 depth_of() {
     awk '/^image /{for (i = 1; i < NF; i++) if ($i == "depth") print $(i + 1)}' \
         "$(tag_scene "$1")"
 }
-for acc in 0 1 2; do
-    for tag in $(configs "$acc" | awk '{print $1}'); do
-        e=$(errors "$WORK/img/host-$acc-$tag.ppm" "$WORK/img/ref-$tag.ppm")
+ideal() { # PSNR of a seed image against the ideal one, or -
+    case $2 in
+    seed*) errors "$1" "$IDEAL" | awk '{print $1}' ;;
+    *) echo - ;;
+    esac
+}
+for u in $BITS; do
+    for tag in $(configs "$u" | awk '{print $1}'); do
+        img=$WORK/img/host-$u-$tag.ppm
+        e=$(errors "$img" "$WORK/img/ref-$tag.ppm")
         same=yes
         for b in an385 m0; do
-            cmp -s "$WORK/img/fw-$b-$acc-$tag.ppm" \
-                "$WORK/img/host-$acc-$tag.ppm" || same=no
+            cmp -s "$WORK/img/fw-$b-$u-$tag.ppm" "$img" || same=no
         done
-        printf '%s\t%s\t%s\t%s\t%s\t%s\t-\t%s\t%s\t%s\n' \
-            "${NAMES[$acc]}" "${tag%%-*}" "$(tag_spp "$tag")" \
-            "$(depth_of "$tag")" "$(ipp "fw-an385-$acc-$tag")" \
-            "$(ipp "fw-m0-$acc-$tag")" "$(res "host-$acc-$tag")" \
-            "$(echo "$e" | tr ' ' '\t')" "$same" >>"$TSV"
+        printf '%s\t%s\t%s\t%s\t%s\t%s\t-\t%s\t%s\t%s\t%s\t%s\n' \
+            "$u" "${tag%%-*}" "$(tag_spp "$tag")" \
+            "$(depth_of "$tag")" "$(ipp "fw-an385-$u-$tag")" \
+            "$(ipp "fw-m0-$u-$tag")" "$(res "host-$u-$tag")" \
+            "$(echo "$e" | tr ' ' '\t')" "$same" "$(tag_ad "$tag")" \
+            "$(ideal "$img" "$tag")" >>"$TSV"
     done
 done
 for prec in f32 f64; do
@@ -239,9 +277,10 @@ for prec in f32 f64; do
         [ "$prec" = f64 ] && host=$(res "host-ref-$s")
         label="reference, float32"
         [ "$prec" = f64 ] && label="reference, double"
-        printf '%s\t%s\t1\t%s\t%s\t%s\t%s\t%s\t%s\t-\n' "$label" "$s" \
-            "$(depth_of "$s")" "$(ipp "sr-m3-$prec-$s")" "$m0" "$m4" \
-            "$host" "$(echo "$e" | tr ' ' '\t')" >>"$TSV"
+        printf '%s\t%s\t1\t%s\t%s\t%s\t%s\t%s\t%s\t-\t0\t%s\n' \
+            "$label" "$s" "$(depth_of "$s")" "$(ipp "sr-m3-$prec-$s")" \
+            "$m0" "$m4" "$host" "$(echo "$e" | tr ' ' '\t')" \
+            "$(ideal "$WORK/img/sr-m3-$prec-$s.ppm" "$s")" >>"$TSV"
     done
 done
 # The M4F float32 image must be the M3 float32 image (same IEEE single).
@@ -250,6 +289,25 @@ for s in $SCENES; do
     cmp -s "$WORK/img/sr-m4f-f32-$s.ppm" "$WORK/img/sr-m3-f32-$s.ppm" ||
         m4same=no
 done
+
+# ---- Pictures: the seed at each precision and its error heat map ------------
+
+if command -v pnmtopng >/dev/null && command -v pamfunc >/dev/null; then
+    mkdir -p docs/img/accuracy
+    for u in $BITS; do
+        cp "$WORK/img/host-$u-seed.ppm" "$WORK/host/seed-u$u.ppm"
+        $REF compare "$WORK/img/host-$u-seed.ppm" "$WORK/img/ref-seed.ppm" \
+            --diff "$WORK/host/diff-u$u.ppm" >/dev/null || true
+        pnmtopng -compression 9 "$WORK/host/seed-u$u.ppm" \
+            >docs/img/accuracy/seed-u$u.png
+        # The error image, brightened 8 times so that flips and
+        # small errors alike can be seen.
+        pamfunc -multiplier=8 "$WORK/host/diff-u$u.ppm" |
+            pnmtopng -compression 9 >docs/img/accuracy/diff-u$u.png
+    done
+else
+    echo "accuracy: pnmtopng (netpbm) not found: pictures not updated" >&2
+fi
 
 elapsed=$((SECONDS - start))
 bash tools/accuracy_report.sh "$TSV" "$m4same" "$W" "$H" "$RUNS" "$elapsed"

@@ -1,90 +1,86 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# accuracy_report.sh: writes docs/accuracy.md and docs/accuracy.svg from the
-# measurements tools/accuracy.sh collected (build/accuracy/results.tsv).
+# accuracy_report.sh: writes docs/accuracy.md, docs/accuracy.svg and
+# docs/accuracy-work.svg from the measurements tools/accuracy.sh collected
+# (build/accuracy/results.tsv).
 #   tools/accuracy_report.sh RESULTS.tsv M4F_SAME WIDTH HEIGHT RUNS SECONDS
 # Plain awk: no plotting package.
+#
+# Columns of RESULTS.tsv: label (unit bits, or "reference, ...") scene spp
+# depth m3 m0 m4f host psnr maxerr bad fw=host adaptive psnr-vs-ideal.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 TSV=$1 M4SAME=$2 W=$3 H=$4 RUNS=$5 SECS=$6
 MD=docs/accuracy.md
 SVG=docs/accuracy.svg
+SVG2=docs/accuracy-work.svg
+DEF=30
 
-# ---- Figures the text quotes (seed scene, 1 spp, its own depth) -------------
+# ---- Figures the text quotes ---------------------------------------------------
 
-# field COLUMN LABEL: column of the seed row with that label at 1 spp and
-# the scene's depth (the first such row).
+# field COLUMN LABEL [SCENE [SPP [ADAPTIVE [DEPTH]]]]: that column of the
+# first matching row (scene seed, 1 spp, not adaptive, any depth).
 field() {
-    awk -F'\t' -v c="$1" -v l="$2" '$1 == l && $2 == "seed" && $3 == 1 {
-        print $c; exit }' "$TSV"
+    awk -F'\t' -v c="$1" -v l="$2" -v s="${3:-seed}" -v sp="${4:-1}" \
+        -v ad="${5:-0}" -v dp="${6:-}" '$1 == l && $2 == s && $3 == sp &&
+        $13 == ad && (dp == "" || $4 == dp) { print $c; exit }' "$TSV"
 }
-f_m3=$(field 5 fast) d_m3=$(field 5 default) p_m3=$(field 5 precise)
-f_m0=$(field 6 fast) d_m0=$(field 6 default) p_m0=$(field 6 precise)
-f_ps=$(field 9 fast) d_ps=$(field 9 default) p_ps=$(field 9 precise)
-s32_m3=$(field 5 "reference, float32") s64_m3=$(field 5 "reference, double")
-s32_ps=$(field 9 "reference, float32") s64_ps=$(field 9 "reference, double")
-s32_m4=$(field 7 "reference, float32")
 calc() { awk "BEGIN { printf \"$1\", $2 }"; }
 # 12345.6 -> 12,345.6
 commas() { echo "$1" | awk '{ d = ""; x = $1; if (x ~ /\./) {
     d = substr(x, index(x, ".")); x = substr(x, 1, index(x, ".") - 1) }
     r = ""; while (length(x) > 3) { r = "," substr(x, length(x) - 2) r
     x = substr(x, 1, length(x) - 3) } print x r d }'; }
+ge() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a == "inf" || a + 0 >= b + 0) }'; }
 
-r_fast=$(calc %.2f "$d_m3 / $f_m3")
-r_fast_m0=$(calc %.2f "$d_m0 / $f_m0")
-r_prec=$(calc %.2f "$p_m3 / $d_m3")
+d_m3=$(field 5 $DEF) d_m0=$(field 6 $DEF) d_ps=$(field 9 $DEF)
+u16_m3=$(field 5 16) u16_m0=$(field 6 16) u16_ps=$(field 9 16)
+s32_m3=$(field 5 "reference, float32") s64_m3=$(field 5 "reference, double")
+s32_ps=$(field 9 "reference, float32")
+s32_m4=$(field 7 "reference, float32")
 r_soft=$(calc %.1f "$s64_m3 / $d_m3")
-r_soft_f=$(calc %.1f "$s64_m3 / $f_m3")
 r_f32=$(calc %.1f "$s32_m3 / $d_m3")
 r_m4=$(calc %.2f "$s32_m4 / $d_m3")
-ok() { if awk "BEGIN { exit !($1) }"; then echo met; else echo missed; fi; }
-t_fast=$(ok "$r_fast >= 1.5 && $f_ps >= 35")
-t_soft=$(ok "$r_soft >= 10")
+r_16=$(calc %.3f "$d_m3 / $u16_m3")
+r_16_m0=$(calc %.3f "$d_m0 / $u16_m0")
+s16_m3=$(field 5 $DEF seed 16)
+a8_m3=$(field 5 $DEF seed 16 8)
+s1_id=$(field 14 $DEF seed 1 0 5)
+s16_id=$(field 14 $DEF seed 16) a8_id=$(field 14 $DEF seed 16 8)
+d0_m3=$(field 5 $DEF seed 1 0 0) d0_id=$(field 14 $DEF seed 1 0 0)
+d2_m3=$(field 5 $DEF seed 1 0 2) d2_id=$(field 14 $DEF seed 1 0 2)
 
-# Pareto frontier over the seed points measured on the M3: a point is on it
-# when no other point costs no more and is no less accurate (one of the two
-# strictly). PSNR "inf" (identical to the reference) beats every number.
-PTS=$(awk -F'\t' '$2 == "seed" && $3 == 1 && !seen[$1]++ && $5 != "-" {
-    printf "%s\t%s\t%s\n", $1, $5, ($9 == "inf" ? 1e9 : $9) }' "$TSV")
-FRONT=$(echo "$PTS" | awk -F'\t' '{ n++; l[n] = $1; c[n] = $2; p[n] = $3 }
+# The targets of the default: seed, mirrors, glass and textures at 70 dB.
+targets=""
+for s in seed mirrors glass textures; do
+    p=$(field 9 $DEF "$s")
+    if ge "$p" 70; then v=met; else v=missed; fi
+    targets="$targets${targets:+; }$s $p dB ($v)"
+done
+
+# Pareto frontier of points "label<TAB>cost<TAB>psnr[<TAB>hollow]" (hollow
+# points are shown, not ranked): a point is on it when no other costs no
+# more and is no less accurate (one of the two strictly). "inf" beats all.
+frontier() {
+    awk -F'\t' '$4 != "hollow" { n++; l[n] = $1; c[n] = $2; p[n] = $3 }
     END { for (i = 1; i <= n; i++) { on = 1
         for (j = 1; j <= n; j++) if (j != i && c[j] <= c[i] && p[j] >= p[i] &&
             (c[j] < c[i] || p[j] > p[i])) on = 0
-        if (on) print l[i] } }')
-if echo "$FRONT" | grep -qx default; then t_pareto=met; else t_pareto=missed; fi
-front_list=$(echo "$FRONT" | paste -sd ';' - | sed 's/;/; /g')
+        if (on) print l[i] } }'
+}
 
-# ---- The table ---------------------------------------------------------------
-
-table=$(awk -F'\t' '
-function commas(x,   s, i, r, d) { if (x == "-") return "–"
-    d = ""; if (x ~ /\./) { d = substr(x, index(x, ".")); x = substr(x, 1,
-        index(x, ".") - 1) }
-    r = ""; while (length(x) > 3) { r = "," substr(x, length(x) - 2) r
-        x = substr(x, 1, length(x) - 3) } return x r d }
-BEGIN { print "| setting | scene | spp | depth | M3 instr/px | M0 instr/px |" \
-    " M4F instr/px | host µs/px (noisy) | PSNR dB | max err | > 2/255 |" \
-    " fw = host |"
-    print "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|:-:|" }
-{ psnr = ($9 == "inf") ? "∞ (identical)" : $9
-  printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s%% | %s |\n",
-      $1, $2, $3, $4, commas($5), commas($6), commas($7),
-      ($8 == "-" ? "–" : $8), psnr, $10,
-      $11, ($12 == "-" ? "–" : $12) }' "$TSV")
-
-# ---- The chart -----------------------------------------------------------------
-
-echo "$PTS" | awk -F'\t' -v front="$(echo "$FRONT" | paste -sd '|' -)" \
-    -v m4="$s32_m4" -v m4p="$s32_ps" '
+# chart POINTS TITLE YLABEL LEGEND OUT: the cost/accuracy plot.
+chart() {
+    local front
+    front=$(echo "$1" | frontier | paste -sd '|' -)
+    echo "$1" | awk -F'\t' -v front="$front" -v title="$2" -v ylabel="$3" \
+        -v legend="$4" '
 function lx(v) { return log(v) / log(10) }
 function X(v) { return L + (lx(v) - x0) / (x1 - x0) * (R - L) }
 function Y(p) { if (p >= 1e8) return TOPY; return B - (p - y0) / (y1 - y0) * (B - T) }
 function esc(s) { gsub(/&/, "\\&amp;", s); return s }
-{ n++; lab[n] = $1; c[n] = $2; p[n] = $3 }
+{ n++; lab[n] = $1; c[n] = $2; p[n] = $3; hollow[n] = ($4 == "hollow") }
 END {
-    if (m4 != "" && m4 != "-") { n++; lab[n] = "float32, M4F FPU"; c[n] = m4
-        p[n] = (m4p == "inf") ? 1e9 : m4p; hollow[n] = 1 }
     split(front, f, "|"); for (i in f) onf[f[i]] = 1
     lo = 1e30; hi = 0; pmin = 1e30; pmax = 0
     for (i = 1; i <= n; i++) { if (c[i] < lo) lo = c[i]; if (c[i] > hi) hi = c[i]
@@ -97,7 +93,7 @@ END {
         Wd, Ht, Wd, Ht
     printf "<rect width=\"%d\" height=\"%d\" fill=\"white\"/>\n", Wd, Ht
     printf "<text x=\"%d\" y=\"18\" font-size=\"14\" font-weight=\"bold\">" \
-        "Cost against accuracy: scenes/seed.scene, 1 spp</text>\n", L
+        "%s</text>\n", L, title
     for (e = x0; e <= x1; e++) { xx = X(10 ^ e)
         printf "<line x1=\"%.1f\" y1=\"%d\" x2=\"%.1f\" y2=\"%d\" stroke=\"#ddd\"/>\n",
             xx, T - 30, xx, B
@@ -118,7 +114,7 @@ END {
     printf "<text x=\"%d\" y=\"%d\" text-anchor=\"middle\">instructions per pixel " \
         "(log scale; Cortex-M3 unless marked)</text>\n", (L + R) / 2, B + 40
     printf "<text transform=\"translate(20 %d) rotate(-90)\" text-anchor=\"middle\">" \
-        "PSNR against the double reference (dB)</text>\n", (T + B) / 2
+        "%s</text>\n", (T + B) / 2, ylabel
     # Frontier: the M3 points on it, in order of cost, as a step line.
     m = 0; for (i = 1; i <= n; i++) if (onf[lab[i]] && !hollow[i]) { m++; o[m] = i }
     for (i = 1; i <= m; i++) for (j = i + 1; j <= m; j++)
@@ -158,12 +154,74 @@ END {
             tx[i], ly[i], right[i] ? "start" : "end", esc(txt[i]) }
     printf "<line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"%d\" stroke=\"#d62728\" " \
         "stroke-width=\"1.5\" stroke-dasharray=\"6,3\"/>\n", L, Ht - 16, L + 30, Ht - 16
-    printf "<text x=\"%d\" y=\"%d\">Pareto frontier (filled red: on it). Hollow: " \
-        "Cortex-M4F instructions, for comparison (not on the frontier).</text>\n",
-        L + 36, Ht - 12
-    print "</svg>" }' >"$SVG"
+    printf "<text x=\"%d\" y=\"%d\">%s</text>\n", L + 36, Ht - 12, legend
+    print "</svg>" }' >"$5"
+}
 
-# ---- The document ---------------------------------------------------------------
+# The precision ladder on the seed (M3), with the float references; the
+# M4F's float32 is shown hollow, for comparison.
+PTS=$(awk -F'\t' '$2 == "seed" && $3 == 1 && $13 == 0 && $4 == 5 &&
+    $5 != "-" && !seen[$1]++ {
+    lab = ($1 ~ /^[0-9]+$/) ? $1 " unit bits" ($1 == 30 ? " (default)" : "") : $1
+    printf "%s\t%s\t%s\n", lab, $5, ($9 == "inf" ? 1e9 : $9) }' "$TSV")
+if [ -n "$s32_m4" ] && [ "$s32_m4" != "-" ]; then
+    PTS=$(printf '%s\nfloat32, M4F FPU\t%s\t%s\thollow' "$PTS" "$s32_m4" \
+        "$(echo "$s32_ps" | sed 's/^inf$/1e9/')")
+fi
+FRONT=$(echo "$PTS" | frontier)
+front_list=$(echo "$FRONT" | paste -sd ';' - | sed 's/;/; /g')
+if echo "$FRONT" | grep -q "(default)"; then t_pareto=met; else t_pareto=missed; fi
+chart "$PTS" "Cost against accuracy: scenes/seed.scene, 1 spp, by precision of unit vectors" \
+    "PSNR against the double reference (dB)" \
+    "Pareto frontier (filled red: on it). Hollow: Cortex-M4F instructions, for comparison." \
+    "$SVG"
+
+# The work knobs of the default, against the ideal image.
+PTS2=$(awk -F'\t' '$1 == 30 && $2 == "seed" {
+    lab = $3 " spp" ($13 > 0 ? ", adaptive " $13 : "") ", depth " $4
+    printf "%s\t%s\t%s\n", lab, $5, ($14 == "inf" ? 1e9 : $14) }' "$TSV")
+FRONT2=$(echo "$PTS2" | frontier)
+front2_list=$(echo "$FRONT2" | paste -sd ';' - | sed 's/;/; /g')
+chart "$PTS2" "Work against the ideal image: scenes/seed.scene, 30 unit bits" \
+    "PSNR against the reference at 16 spp, depth 5 (dB)" \
+    "Pareto frontier (filled red: on it)." "$SVG2"
+
+# ---- The tables ------------------------------------------------------------------
+
+TABFN='function commas(x,   i, r, d) { if (x == "-" || x == "") return "–"
+    d = ""; if (x ~ /\./) { d = substr(x, index(x, ".")); x = substr(x, 1,
+        index(x, ".") - 1) }
+    r = ""; while (length(x) > 3) { r = "," substr(x, length(x) - 2) r
+        x = substr(x, 1, length(x) - 3) } return x r d }
+function db(x) { return (x == "inf") ? "∞ (identical)" : (x == "-" ? "–" : x) }'
+table1=$(awk -F'\t' "$TABFN"'
+BEGIN { print "| unit bits | scene | M3 instr/px | M0 instr/px | M4F instr/px |" \
+    " host µs/px (noisy) | PSNR dB | max err | > 2/255 | fw = host |"
+    print "|---|---|--:|--:|--:|--:|--:|--:|--:|:-:|" }
+$3 == 1 && $13 == 0 && ($1 !~ /^[0-9]+$/ || $2 != "seed" || $4 == 5) &&
+    !seen[$1 "/" $2]++ {
+  lab = ($1 == 30) ? "**30 (default)**" : $1
+  printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s%% | %s |\n",
+      lab, $2, commas($5), commas($6), commas($7), ($8 == "-" ? "–" : $8),
+      db($9), $10, $11, ($12 == "-" ? "–" : $12) }' "$TSV")
+table2=$(awk -F'\t' "$TABFN"'
+BEGIN { print "| spp | adaptive | depth | M3 instr/px | M0 instr/px |" \
+    " host µs/px (noisy) | PSNR dB, same spp and depth | PSNR dB, ideal |" \
+    " fw = host |"
+    print "|--:|--:|--:|--:|--:|--:|--:|--:|:-:|" }
+$1 == 30 && $2 == "seed" {
+  printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", $3,
+      ($13 > 0 ? $13 : "–"), $4, commas($5), commas($6), $8, db($9),
+      db($14), $12 }' "$TSV")
+
+# The pictures, with the PSNR of each.
+pics=$(awk -F'\t' '$2 == "seed" && $3 == 1 && $13 == 0 && $4 == 5 &&
+    $1 ~ /^[0-9]+$/ && !seen[$1]++ { printf "%s %s\n", $1, $9 }' "$TSV" |
+    sort -n | awk '{
+    printf "| %s: %s dB | ![seed, %s unit bits](img/accuracy/seed-u%s.png) | ![error, %s unit bits](img/accuracy/diff-u%s.png) |\n",
+        $1, $2, $1, $1, $1, $1 }')
+
+# ---- The document -----------------------------------------------------------------
 
 {
 cat <<EOF
@@ -173,108 +231,107 @@ Generated by \`make accuracy\` (tools/accuracy.sh and
 tools/accuracy_report.sh); do not edit by hand, run it again. The last run
 took ${SECS} s. Instruction counts are exact and repeat to the last digit
 (QEMU \`-icount\`); host times are the median of ${RUNS} runs on whatever
-machine ran it, and **noisy**.
+machine ran it, and **noisy**. ${W}x${H} pixels throughout.
 
-## The settings
+## Where the error comes from
 
-\`RT_ACCURACY\` (core/rt_config.h) picks the math layer at compile time;
-\`core/fx_math.h\` states each operation's bound.
+At one sample per pixel almost all of the squared error against the
+double reference comes from a few pixels where a decision flips: hit or
+miss at a silhouette, shadow or light, which texture cell, most of them
+seen in reflections and through glass. A single full-contrast flipped
+pixel caps a ${W}x${H} image near 52 dB. Those decisions are taken on
+unit vectors (ray directions, normals, directions to lights), whose
+angle error grows with every unit a ray travels. So unit vectors carry
+\`RT_UNIT_BITS\` fraction bits (core/fx_dir.h, Q2.30 by default) while
+positions, distances and colours stay Q16.16; the bounding tests near a
+silhouette, the quads' edges and the frame cylinders and cones are
+solved in work at that precision too (docs/numerics.md).
 
-| setting | \`RT_ACCURACY\` | multiply, dot, cross, madd | div, recip | sqrt, length | normalize |
-|---|---|---|---|---|---|
-| fast | 0 | round down (< 1 ulp) | within 2 ulps / 1 ulp, no correction step | within 1 ulp (no final fix-up) | within 0.7 ulp, interpolated table (no polynomial) |
-| default | 1 | nearest, ties up (0.5 ulp) | correctly rounded | correctly rounded | within 0.5 + 2^-4 ulp |
-| precise | 2 | nearest, ties to even | correctly rounded, ties to even | correctly rounded | correctly rounded (exact tie test) |
+## Precision of unit vectors
 
-Every setting saturates the same way, renders the same bytes on the host
-and on every board (the "fw = host" column checks the M3 and M0 images
-against the host's), and passes \`tests/test_fx.c\` and \`tests/test_vec.c\`
-built for it:
+\`RT_UNIT_BITS\` (16..30, core/rt_config.h) sets those fraction bits at
+compile time. It is a measuring device more than a knob: every bit count
+does the same 64-bit products, so fewer bits buy no speed. The default's
+30 bits cost ${r_16}x the instructions of 16 bits on the M3 (${r_16_m0}x on
+the M0) for ${d_ps} dB instead of ${u16_ps} on the seed. Leave it at 30.
 
-    make RT_DEFS=-DRT_ACCURACY=0 HOST_BUILD=build/posix-fast build/posix-fast/tests/test_fx
-    build/posix-fast/tests/test_fx
+PSNR, max error and the share of pixels off by more than 2/255 compare
+each image with the double reference at the same size, spp and depth
+(\`fixtrace --reference\`); "∞" means identical bytes. M3 is
+\`BOARD=an385\`, M0 \`BOARD=m0\` (the firmware as \`make qemu\` builds it,
+with only the effects the scene needs), M4F QEMU's mps2-an386 with the FPU
+on; "fw = host" checks the M3 and M0 images against the host's, byte for
+byte. Host time is \`fixtrace --stats\`'s render_seconds per pixel, one
+thread. The reference rows are port/posix/ref_render.c and ref_shapes.c,
+unchanged, built as firmware (bench/softref: a small libm, soft double
+or, with \`-Ddouble=float\`, soft float on the M3 and M0, hardware float on
+the M4F); their host time is \`--reference\` on the host's FPU.
 
-Spp and depth are run-time knobs (\`-s\`, \`-d\`; firmware \`SPP=\`, and the
-depth on the scene's \`image\` line).
-
-## Measurements
-
-${W}x${H} pixels. PSNR, max error and the share of pixels off by more than
-2/255 compare each image with the double reference rendered at the same
-size, spp and depth (\`fixtrace --reference\`); "∞" means identical bytes.
-M3 is \`BOARD=an385\`, M0 \`BOARD=m0\` (the firmware as \`make qemu\` builds
-it by default, with only the effects the scene needs), M4F QEMU's
-mps2-an386 with the FPU on. Host time is \`fixtrace --stats\`'s
-render_seconds (no parsing or file output) per pixel, one thread. The reference rows are port/posix/ref_render.c and ref_shapes.c, unchanged, built as
-firmware (bench/softref: a small libm, soft double or, with
-\`-Ddouble=float\`, soft float on the M3 and M0, hardware float on the
-M4F); their host time is \`--reference\` on the host's FPU.
-
-${table}
+${table1}
 
 The M4F float32 image is byte-identical to the M3 soft-float one: ${M4SAME}.
 
-![cost against PSNR](accuracy.svg)
+![cost against PSNR by precision](accuracy.svg)
+
+The seed at each precision, and its error against the reference
+(\`fixtrace compare --diff\`, brightened 8 times: black where the two
+agree):
+
+| unit bits | image | error |
+|---|---|---|
+${pics}
+
+## The work knobs
+
+Samples per pixel (\`-s\`, firmware \`SPP=\`), adaptive anti-aliasing
+(\`--adaptive T\`, firmware \`ADAPTIVE=\`: only pixels whose neighbourhood
+differs by more than T levels get the full grid) and the depth on the
+scene's \`image\` line are run-time choices. They are measured twice:
+against the reference at the same spp and depth (the arithmetic) and
+against the ideal image, the reference at 16 spp and the seed's depth 5
+(what a viewer sees).
+
+${table2}
+
+![work against the ideal image](accuracy-work.svg)
+
+## Which to use
+
+- **Every use: the default, 30 unit bits.** No precision is cheaper, and
+  the seed is at ${d_ps} dB against the reference, where float32 is at
+  ${s32_ps}.
+- **A still frame to show:** 16 spp with \`--adaptive 8\`:
+  $(commas "$a8_m3") instructions per pixel on the M3 against
+  $(commas "$s16_m3") for the full 16 spp, at ${a8_id} dB against the
+  ideal image (16 spp: ${s16_id}).
+- **Previews:** 1 spp (${s1_id} dB against the ideal,
+  $(commas "$d_m3") instructions per pixel), or a lower depth for scenes
+  of mirrors and glass: depth 2 costs $(commas "$d2_m3") at ${d2_id} dB,
+  depth 0 $(commas "$d0_m3") at ${d0_id} dB.
+- **Float hardware:** an M4F runs the float32 reference in
+  $(commas "$s32_m4") instructions per pixel, ${r_m4}x the fixed-point
+  default on the M3; soft float on the M3 costs ${r_f32}x, soft double
+  ${r_soft}x.
 
 ## Targets
 
-- The default setting lies on the Pareto frontier (seed, M3): **${t_pareto}**.
-  On the frontier: ${front_list}.
-- Fast costs at least 1.5x fewer instructions than default on the M3 at
-  PSNR >= 35 dB on the seed: **${t_fast}**: ${r_fast}x fewer
-  ($(commas "$f_m3") against $(commas "$d_m3") per pixel) at ${f_ps} dB; on
-  the M0 ${r_fast_m0}x ($(commas "$f_m0") against $(commas "$d_m0")).
-- Fixed point on the M3 costs at least 10x fewer instructions than the
-  soft-double reference: **${t_soft}**: ${r_soft}x (default), ${r_soft_f}x
-  (fast).
-
-## What the numbers say
-
-- **The math layer is a small part of the cost.** Fast saves
-  $(calc %.1f "(1 - $f_m3 / $d_m3) * 100")% of the M3 instructions and
-  $(calc %.1f "(1 - $f_m0 / $d_m0) * 100")% of the M0 ones: most of a
-  pixel is intersection and shading code in core/rt_*.c that does its own
-  64-bit arithmetic, which the setting does not touch. A 1.5x gap would
-  need the intersection code itself to trade accuracy (for example
-  32-bit bounding-sphere tests with a truncated closest approach), which
-  is outside the math layer.
-- **Fast's loss is its rounding down.** The round-down multiply, dot
-  product and madd bias every shading sum and every reflected or refracted
-  direction the same way (glass, with its chains of refraction, shows it
-  most); the approximate square root, normalize, divide and reciprocal
-  err by under 1 ulp either way. (Checked once by building fast with the
-  default's rounding: it kept about half of fast's saving and lost no
-  PSNR.)
-- **Precise is paid for, not seen.** It costs ${r_prec}x the default's M3
-  instructions (the correctly rounded normalize is most of it) and moves
-  PSNR by $(calc %+.2f "$p_ps - $d_ps") dB on the seed. The remaining
-  error is not arithmetic rounding but decisions (hit or miss at a
-  silhouette, a texture cell, a shadow edge) taken on Q16.16 positions
-  and directions, and a unit direction in Q16.16 is already within 0.55
-  ulp per component in the default.
-- **Floating point is the accuracy ceiling, at a price.** float32 in soft
-  float on the M3 costs ${r_f32}x the default's instructions for
-  ${s32_ps} dB; soft double ${r_soft}x for the reference itself. An M4F
-  with its FPU runs the float32 renderer in $(commas "$s32_m4") instructions per
-  pixel, ${r_m4}x the fixed-point default on the M3 (which runs the same
-  Thumb-2 code on an M4), at float32's ${s32_ps} dB.
-- Spp and depth are the large knobs (see their rows): cost grows with spp
-  almost in proportion, and with depth as far as the scene's mirrors and
-  glass send rays. Their PSNR is against the reference at the same spp
-  and depth, so it measures arithmetic, not anti-aliasing; they are left
-  off the chart, which compares renderings of one and the same image.
+- The default lies on the Pareto frontier of the precision ladder (seed,
+  M3): **${t_pareto}**. On the frontier: ${front_list}.
+- The default against the reference, 1 spp: ${targets}.
+- On the frontier of the work knobs: ${front2_list}.
 
 ## Reproducing a row
 
     make accuracy                                   # everything, this page
     make -j2 build/posix/fixtrace
-    make -j2 HOST_BUILD=build/posix-acc0 RT_DEFS=-DRT_ACCURACY=0 build/posix-acc0/fixtrace
-    build/posix-acc0/fixtrace -W ${W} -H ${H} -o fast.ppm scenes/seed.scene
+    make -j2 HOST_BUILD=build/posix-u16 RT_DEFS=-DRT_UNIT_BITS=16 build/posix-u16/fixtrace
+    build/posix-u16/fixtrace -W ${W} -H ${H} -o u16.ppm scenes/seed.scene
     build/posix/fixtrace --reference -W ${W} -H ${H} -o ref.ppm scenes/seed.scene
-    build/posix/fixtrace compare fast.ppm ref.ppm
-    build/posix-acc0/fixtrace --stats -W ${W} -H ${H} -o fast.ppm scenes/seed.scene   # render_seconds
-    make qemu BOARD=an385 FW_BUILD=build/accuracy/fw-an385-acc0 \\
-        FW_DEFS=-DRT_ACCURACY=0 SCENE=scenes/seed.scene WIDTH=${W} HEIGHT=${H} SPP=1
+    build/posix/fixtrace compare u16.ppm ref.ppm --diff diff.ppm
+    build/posix-u16/fixtrace --stats -W ${W} -H ${H} -o u16.ppm scenes/seed.scene   # render_seconds
+    make qemu BOARD=an385 FW_BUILD=build/accuracy/fw-an385-u16 \\
+        FW_DEFS=-DRT_UNIT_BITS=16 SCENE=scenes/seed.scene WIDTH=${W} HEIGHT=${H} SPP=1
+    make qemu BOARD=an385 SCENE=scenes/seed.scene WIDTH=${W} HEIGHT=${H} SPP=16 ADAPTIVE=8
     make softref-qemu SR=m3-f64 SCENE=scenes/seed.scene WIDTH=${W} HEIGHT=${H} SPP=1
     make softref-qemu SR=m4f-f32 SCENE=scenes/seed.scene WIDTH=${W} HEIGHT=${H} SPP=1
 
