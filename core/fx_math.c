@@ -8,8 +8,6 @@
  * 500 instructions on Cortex-M, a 32-bit one a single instruction on M3.
  * Every quotient digit is corrected against its exact remainder, so the
  * result is the correctly rounded quotient, the same on every target.
- * The fast setting (RT_ACCURACY 0) skips the corrections and the rounding;
- * the precise one (2) breaks ties to even.
  */
 #include "fx_math.h"
 
@@ -35,19 +33,6 @@ fx_t fx_div(fx_t a, fx_t b)
     /* Long division of ua * 2^16 by ub in two digits: q1 < 2^15, then 16
      * fraction bits q0 from the remainder r1 < ub. */
     uint32_t q1 = ua / ub, r1 = ua - q1 * ub, q0, r;
-#if RT_ACCURACY == 0
-    /* The second digit from the divisor's top 16 bits alone: never too
-     * small and at most 2 too big (Knuth), so within (-1, 2] ulps of the
-     * exact quotient. q0 <= 2^16 + 1 and q1 < 2^15: q stays below 2^32. */
-    if (ub <= 0x10000u) {
-        q0 = (r1 << 16) / ub;
-    } else {
-        int c = fx_clz32(ub);
-        q0 = (r1 << c) / ((ub << c) >> 16);
-    }
-    (void)r;
-    return sat_signed((q1 << 16) + q0, neg);
-#else
     if (ub <= 0x10000u) {
         uint32_t n = r1 << 16; /* r1 < 2^16 */
         q0 = n / ub;
@@ -72,15 +57,9 @@ fx_t fx_div(fx_t a, fx_t b)
         r = ((rh << 16) - q0 * dl) >> c;
     }
     uint32_t q = (q1 << 16) + q0;
-#if RT_ACCURACY == 1
     /* Round half up on magnitudes: remainder >= ub / 2. */
     q += r >= ub - r;
-#else
-    /* Round half to even: up past the half, or at it when q is odd. */
-    q += r > ub - r || (r == ub - r && (q & 1));
-#endif
     return sat_signed(q, neg);
-#endif /* RT_ACCURACY != 0 */
 }
 
 fx_t fx_recip(fx_t a)
@@ -90,11 +69,6 @@ fx_t fx_recip(fx_t a)
     uint32_t ua = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
     if (ua <= 2) /* 2^32 / ua >= 2^31 */
         return a < 0 ? FX_MIN : FX_MAX;
-#if RT_ACCURACY == 0
-    /* floor((2^32 - 1) / ua) + 1 = ceil(2^32 / ua): one divide, below
-     * 1 ulp away from zero, and exact for powers of two (1/1.0 = 1.0). */
-    return sat_signed(0xFFFFFFFFu / ua + 1, a < 0);
-#else
     /* floor(2^32 / ua) is q or q + 1 (the latter when ua divides 2^32);
      * r = 2^32 - q * ua is in [1, ua], computed mod 2^32. */
     uint32_t q = 0xFFFFFFFFu / ua;
@@ -103,13 +77,8 @@ fx_t fx_recip(fx_t a)
         q++;
         r -= ua;
     }
-#if RT_ACCURACY == 1
     q += r >= ua - r;
-#else
-    q += r > ua - r || (r == ua - r && (q & 1));
-#endif
     return sat_signed(q, a < 0);
-#endif
 }
 
 uint32_t fx_udiv64_32(uint64_t n, uint32_t d)

@@ -11,31 +11,16 @@
  * Right shifts of negative values are arithmetic on every compiler we build
  * with (GCC, Clang, for x86-64, ARM and RISC-V); the tests check it.
  *
- * Accuracy settings (RT_ACCURACY in rt_config.h, chosen at compile time;
- * docs/accuracy.md measures what each costs and gives):
- *   1 (default) what the comments below state: correctly rounded, ties
- *     toward +infinity (mul, from_q32) or away from zero (div, recip);
- *     normalize within 0.5 + 2^-4 ulp.
- *   0 (fast)    rounds down instead (mul, from_q32, dot, cross, madd:
- *     floor; div, recip: within 2 and 1 ulp, no correction steps), square
- *     roots within 1 ulp, normalize within 0.7 ulp from an interpolated
- *     table instead of a polynomial.
- *   2 (precise) ties to even wherever a tie can occur, and normalize
- *     correctly rounded (within 0.5 ulp).
- * Saturation, the zero-divisor results and the never-past-1 property of
- * normalize hold in every setting, and each setting gives the same bits on
- * every target.
+ * Every operation gives the same bits on every target. The accuracy of
+ * unit vectors is a setting (RT_UNIT_BITS, fx_dir.h); that of the Q16.16
+ * operations here is not.
  */
 #ifndef FX_MATH_H
 #define FX_MATH_H
 
 #include <stdint.h>
 
-#include "rt_config.h" /* RT_ACCURACY */
-
-#if RT_ACCURACY < 0 || RT_ACCURACY > 2
-#error "RT_ACCURACY must be 0 (fast), 1 (default) or 2 (precise)"
-#endif
+#include "rt_config.h"
 
 typedef int32_t fx_t;
 
@@ -165,30 +150,12 @@ static inline fx_t fx_abs(fx_t a)
     return a < 0 ? fx_neg(a) : a;
 }
 
-/* What to add to an exact Q32.32 value p (|p| < 2^62) so that p >> 16
- * rounds as the accuracy setting says: nothing (fast: floor), one half
- * (default: to nearest, ties toward +infinity), or one half less 2^-32
- * unless the bit above is odd (precise: to nearest, ties to even). */
-static inline int64_t fx_round_bias(int64_t p)
-{
-#if RT_ACCURACY == 0
-    (void)p;
-    return 0;
-#elif RT_ACCURACY == 1
-    (void)p;
-    return 0x8000;
-#else
-    return 0x7FFF + ((p >> 16) & 1);
-#endif
-}
-
-/* Multiplies, rounding to nearest (ties toward +infinity; precise: ties to
- * even; fast: rounds down, error below 1 ulp); saturates on overflow. The
- * 64-bit product is exact, so the error is at most 0.5 ulp. */
+/* Multiplies, rounding to nearest (ties toward +infinity); saturates on
+ * overflow. The 64-bit product is exact, so the error is at most 0.5 ulp. */
 static inline fx_t fx_mul(fx_t a, fx_t b)
 {
     int64_t p = fx_imul64(a, b);
-    p += fx_round_bias(p); /* |p| < 2^62 + 2^15: no overflow */
+    p += 0x8000; /* half an ulp; |p| < 2^62 + 2^15: no overflow */
     int32_t hi = (int32_t)(p >> 32);
     /* p >> 16 fits in 32 bits exactly when hi is in [-2^15, 2^15): one
      * compare on the high word instead of two 64-bit compares. */
@@ -198,15 +165,11 @@ static inline fx_t fx_mul(fx_t a, fx_t b)
 }
 
 /* Rounds a Q32.32 value held in an int64 to Q16.16, to nearest (ties toward
- * +infinity; precise: ties to even; fast: rounds down); saturates. Used
- * after exact 64-bit dot products. */
+ * +infinity); saturates. Used after exact 64-bit dot products. */
 static inline fx_t fx_from_q32(int64_t q)
 {
     /* Adding the half bit after the shift cannot overflow, unlike
      * q + 2^15, for any q. */
-#if RT_ACCURACY == 0
-    return fx_sat64(q >> 16);
-#elif RT_ACCURACY == 1
     /* q >> 16 fits in 32 bits exactly when the high word is in
      * [-2^15, 2^15); then only FX_MAX plus the half bit can overflow. */
     int32_t hi = (int32_t)(q >> 32);
@@ -214,12 +177,6 @@ static inline fx_t fx_from_q32(int64_t q)
         return (hi >> 31) ^ FX_MAX;
     fx_t r = (fx_t)(((uint32_t)hi << 16) | ((uint32_t)q >> 16));
     return r == FX_MAX ? r : r + (fx_t)(((uint32_t)q >> 15) & 1);
-#else
-    /* Up when the half bit is set and the value is not a tie (some lower
-     * bit set) or the tie is to an odd neighbour (bit 16 set). */
-    int64_t up = (q >> 15) & (((q & 0x7FFF) != 0) | (q >> 16)) & 1;
-    return fx_sat64((q >> 16) + up);
-#endif
 }
 
 /* Number of leading zero bits of x (0..31); exact. x must not be 0. */
@@ -254,31 +211,28 @@ static inline int fx_clz64(uint64_t x)
     return hi ? fx_clz32(hi) : 32 + fx_clz32((uint32_t)x);
 }
 
-/* Divides a by b, correctly rounded to nearest (ties away from zero;
- * precise: ties to even), so the error is at most 0.5 ulp; fast: within
- * 2 ulps (one digit of the long division goes uncorrected). Saturates on
- * overflow. b == 0 gives FX_MAX for a >= 0 and FX_MIN for a < 0. */
+/* Divides a by b, correctly rounded to nearest (ties away from zero), so
+ * the error is at most 0.5 ulp. Saturates on overflow. b == 0 gives FX_MAX
+ * for a >= 0 and FX_MIN for a < 0. */
 fx_t fx_div(fx_t a, fx_t b);
 
 /* Reciprocal 1/a: the same value as fx_div(FX_ONE, a), so correctly
- * rounded (ties away from zero; precise: ties to even) and saturated; 1/0
- * gives FX_MAX. Fast: rounded away from zero, so below 1 ulp and exact
- * when 1/a is representable (it is not fx_div's fast value then). */
+ * rounded (ties away from zero) and saturated; 1/0 gives FX_MAX. */
 fx_t fx_recip(fx_t a);
 
 /* Square root, correctly rounded to nearest (there are no ties), so the
- * error is below 0.5 ulp (fast: below 1 ulp); cannot overflow
- * (sqrt(FX_MAX) < 182). Negative input gives 0. */
+ * error is below 0.5 ulp; cannot overflow (sqrt(FX_MAX) < 182). Negative
+ * input gives 0. */
 fx_t fx_sqrt(fx_t a);
 
 /* Square root of an unsigned Q32.32 value (for example an exact 64-bit sum
- * of squared Q16.16 values), correctly rounded to nearest (no ties; fast:
- * within 1 ulp), as an unsigned Q16.16 value. Saturates: a root that
- * rounds to 2^32 (a >= 2^64 - 2^32) gives 2^32 - 1. */
+ * of squared Q16.16 values), correctly rounded to nearest (no ties), as an
+ * unsigned Q16.16 value. Saturates: a root that rounds to 2^32
+ * (a >= 2^64 - 2^32) gives 2^32 - 1. */
 uint32_t fx_sqrt_q32(uint64_t a);
 
-/* Integer square root: floor(sqrt(a)), exact for every input and in every
- * accuracy setting; cannot overflow (the result is below 2^32). */
+/* Integer square root: floor(sqrt(a)), exact for every input; cannot
+ * overflow (the result is below 2^32). */
 uint32_t fx_isqrt64(uint64_t a);
 
 /* floor(n / d) for d > 0 and n < d * 2^32 (the quotient fits 32 bits),

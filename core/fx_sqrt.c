@@ -11,11 +11,6 @@
  * the theorem says is exact after at most one correction. So the root and
  * the remainder are exact, and rounding decides on exact integers: no
  * loops, two 32-bit divides (single instructions on Cortex-M3).
- *
- * The fast setting (RT_ACCURACY 0) keeps the exact top half but skips the
- * last correction and the rounding decision on the remainder: the
- * Karatsuba root is then floor(sqrt) or one more, within 1 ulp. The
- * integer root fx_isqrt64 stays exact in every setting.
  */
 #include "fx_math.h"
 
@@ -76,7 +71,6 @@ static inline uint32_t sqrtrem32(uint32_t m, uint32_t *rem)
     return y;
 }
 
-#if RT_ACCURACY != 0
 /* floor(sqrt(x)) for x = h * 2^24 + lo in [2^46, 2^48), lo < 2^24;
  * *rem = x - root^2, in [0, 2 root]. Base 2^12 Karatsuba step. */
 static inline uint32_t sqrtrem48(uint32_t h, uint32_t lo, uint32_t *rem)
@@ -95,8 +89,6 @@ static inline uint32_t sqrtrem48(uint32_t h, uint32_t lo, uint32_t *rem)
     *rem = r;
     return s;
 }
-
-#endif
 
 /* floor(sqrt(x)) for x = hi * 2^32 + lo in [2^62, 2^64); *rem = x - root^2,
  * in [0, 2 root]. Base 2^16 Karatsuba step. */
@@ -124,25 +116,6 @@ static inline uint32_t sqrtrem64(uint32_t hi, uint32_t lo, uint64_t *rem)
     *rem = (uint64_t)r;
     return s;
 }
-
-#if RT_ACCURACY == 0
-/* floor(sqrt(x)) or one more, for x as in sqrtrem48: its first part. */
-static inline uint32_t sqrt48_fast(uint32_t h, uint32_t lo)
-{
-    uint32_t r1, s1 = sqrtrem24(h, &r1);
-    uint32_t n = (r1 << 12) | (lo >> 12);
-    return (s1 << 12) + n / (2 * s1);
-}
-
-/* floor(sqrt(x)) or one more, for x as in sqrtrem64 (below 2^32, as the
- * candidate 2^32 is lowered by one). */
-static inline uint32_t sqrt64_fast(uint32_t hi, uint32_t lo)
-{
-    uint32_t r1, s1 = sqrtrem32(hi, &r1);
-    uint32_t q = ((r1 << 15) | (lo >> 17)) / s1; /* q <= 2^16 */
-    return (s1 << 16) + q - (q >> 16);
-}
-#endif
 
 /* Shifts a != 0 left by 2k so that its top word is in [2^30, 2^32); the
  * words come back in *hi, *lo. Returns k. Word by word, as a 64-bit
@@ -180,16 +153,9 @@ uint32_t fx_sqrt_q32(uint64_t a)
     if (a == 0)
         return 0;
     int k = normalise64(a, &hi, &lo);
-#if RT_ACCURACY == 0
-    uint32_t s = sqrt64_fast(hi, lo);
-    (void)r;
-    if (k == 0) /* within 1 ulp already */
-        return s;
-#else
     uint32_t s = sqrtrem64(hi, lo, &r);
     if (k == 0) /* round up when sqrt(a) >= s + 1/2, i.e. r > s */
         return s + (r > s && s != 0xFFFFFFFFu);
-#endif
     /* round(sqrt(x) / 2^k) = floor((floor(sqrt(x)) + 2^(k-1)) / 2^k);
      * never a tie, since a is not a quarter-integer square. Written so
      * that s = 2^32 - 1 with k = 1 cannot wrap. */
@@ -206,15 +172,8 @@ fx_t fx_sqrt(fx_t a)
      * m in [2^30, 2^32), so x = m * 2^16 is in [2^46, 2^48). */
     int k = fx_clz32((uint32_t)a) >> 1;
     uint32_t m = (uint32_t)a << (2 * k);
-#if RT_ACCURACY == 0
-    uint32_t s = sqrt48_fast(m >> 8, (m & 0xFF) << 16);
-    (void)r;
-    if (k == 0)
-        return (fx_t)s;
-#else
     uint32_t s = sqrtrem48(m >> 8, (m & 0xFF) << 16, &r);
     if (k == 0)
         return (fx_t)(s + (r > s));
-#endif
     return (fx_t)(((s >> (k - 1)) + 1) >> 1); /* as in fx_sqrt_q32; s < 2^24 */
 }

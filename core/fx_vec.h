@@ -41,7 +41,7 @@ static inline fx_vec3 fx_v3_neg(fx_vec3 a)
 }
 
 /* a * s per component; each rounded as fx_mul (to nearest, ties toward
- * +infinity; precise: ties to even; fast: down), saturates. */
+ * +infinity), saturates. */
 static inline fx_vec3 fx_v3_scale(fx_vec3 a, fx_t s)
 {
     return fx_v3(fx_mul(a.x, s), fx_mul(a.y, s), fx_mul(a.z, s));
@@ -50,16 +50,14 @@ static inline fx_vec3 fx_v3_scale(fx_vec3 a, fx_t s)
 /* a * b rounded as fx_mul but not saturated: |result| <= 2^46. */
 static inline int64_t fx_mul_wide(fx_t a, fx_t b)
 {
-    int64_t p = fx_imul64(a, b);
-    return (p + fx_round_bias(p)) >> 16;
+    return (fx_imul64(a, b) + 0x8000) >> 16;
 }
 
 /* a + b * s with one rounding, as fx_mul (to nearest, ties toward
- * +infinity; precise: ties to even; fast: down); saturates. */
+ * +infinity); saturates. */
 static inline fx_t fx_madd1(fx_t a, fx_t b, fx_t s)
 {
-    int64_t p = fx_imul64(b, s);
-    p += fx_round_bias(p);
+    int64_t p = fx_imul64(b, s) + 0x8000;
     int32_t hi = (int32_t)(p >> 32);
     /* The usual case: the rounded product fits in 32 bits, and a 32-bit
      * add with an overflow check gives the saturated sum. */
@@ -73,8 +71,7 @@ static inline fx_t fx_madd1(fx_t a, fx_t b, fx_t s)
  * saturate, and the range check falls away. Same results as fx_madd1. */
 static inline fx_t fx_madd1_unit(fx_t a, fx_t b, fx_t s)
 {
-    int64_t p = fx_imul64(b, s);
-    p += fx_round_bias(p);
+    int64_t p = fx_imul64(b, s) + 0x8000;
     return fx_add(a, (fx_t)(p >> 16));
 }
 
@@ -102,8 +99,7 @@ static inline int64_t fx_v3_dot_q32(fx_vec3 a, fx_vec3 b)
 }
 
 /* Dot product with a bounded operand (as fx_v3_dot_q32), rounded once as
- * fx_from_q32 (to nearest, ties toward +infinity; precise: ties to even;
- * fast: down); saturates. */
+ * fx_from_q32 (to nearest, ties toward +infinity); saturates. */
 static inline fx_t fx_v3_dotn(fx_vec3 a, fx_vec3 b)
 {
     return fx_from_q32(fx_v3_dot_q32(a, b));
@@ -130,17 +126,15 @@ uint64_t fx_v3_len2_q32(fx_vec3 a);
  * fx_from_q32; saturates. */
 fx_vec3 fx_v3_cross(fx_vec3 a, fx_vec3 b);
 
-/* Length, correctly rounded to nearest from the exact |a|^2 (fast: within
- * 1 ulp, as fx_sqrt_q32); saturates to FX_MAX (only for lengths that
- * round to 32768 or more). */
+/* Length, correctly rounded to nearest from the exact |a|^2 (as
+ * fx_sqrt_q32); saturates to FX_MAX (only for lengths that round to 32768
+ * or more). */
 fx_t fx_v3_length(fx_vec3 a);
 
 /* Unit vector along a: each component within 1 ulp of the true value (at
  * most 0.5 + 2^-4 ulp; it is not correctly rounded) and never past +-1, for
  * tiny and huge vectors alike, since the squared length is exact in 64
- * bits; cannot overflow. The zero vector gives the zero vector. Precise:
- * each component correctly rounded (ties away from zero). Fast: within
- * 0.7 ulp (an interpolated table instead of the polynomial). */
+ * bits; cannot overflow. The zero vector gives the zero vector. */
 fx_vec3 fx_v3_normalize(fx_vec3 a);
 
 /* Unit vector along a x b, from the exact 64-bit cross product, so tiny

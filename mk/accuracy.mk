@@ -19,10 +19,10 @@
 # startup, board, semihosting and libc files, linker/an385.ld the memory
 # map (the same on the an386).
 #
-# The fixed-point builds per accuracy setting use the ordinary targets with
-# their own directories, e.g.
-#   make HOST_BUILD=build/posix-acc0 RT_DEFS=-DRT_ACCURACY=0 build/posix-acc0/fixtrace
-#   make qemu BOARD=an385 FW_BUILD=build/accuracy/fw-an385-acc0 FW_DEFS=-DRT_ACCURACY=0
+# The fixed-point builds per precision of unit vectors use the ordinary
+# targets with their own directories, e.g.
+#   make HOST_BUILD=build/posix-u16 RT_DEFS=-DRT_UNIT_BITS=16 build/posix-u16/fixtrace
+#   make qemu BOARD=an385 FW_BUILD=build/accuracy/fw-an385-u16 FW_DEFS=-DRT_UNIT_BITS=16
 
 .PHONY: accuracy softref softref-qemu sr-check sr-force
 

@@ -29,7 +29,7 @@
 #   limit: a scene above it fails the build, naming the limit.
 # The flags and capacities go to build/<b>/fw_effects.h, which every C file
 # includes first, so changing SCENE or SPP rebuilds what it must.
-# A FW_DEFS that changes the parsed values (-DRT_ACCURACY=n, -DRT_UNIT_BITS=n,
+# A FW_DEFS that changes the parsed values (-DRT_UNIT_BITS=n,
 # -DRT_MAX_DEPTH=n) gets a host tool built with it, under build/posix-fw*.
 #
 # OUTPUT=semihost (the default) sends the image and the figures through
@@ -188,7 +188,7 @@ $(FW_CONFIG): fw-force | fw-check-board
 # same host objects at the same time. Settings that change the parsed
 # scene (FW_HOST_DEFS) need a host tool built with them: scene_tables.c
 # refuses to compile under other values.
-FW_HOST_DEFS := $(filter -DRT_ACCURACY=% -DRT_UNIT_BITS=% -DRT_MAX_DEPTH=%,$(FW_DEFS))
+FW_HOST_DEFS := $(filter -DRT_UNIT_BITS=% -DRT_MAX_DEPTH=%,$(FW_DEFS))
 fw_empty :=
 fw_space := $(fw_empty) $(fw_empty)
 FW_HOST_BUILD := $(if $(FW_HOST_DEFS),build/posix-fw$(subst =,-,$(subst \

@@ -121,15 +121,10 @@ static int log_has(const char *what)
  * compiled tables must share to have the same layout and values. */
 static void settings(char *buf, size_t n)
 {
-    int k = snprintf(buf, n, "-DRT_MAX_OBJECTS=%d -DRT_MAX_MATERIALS=%d "
-                     "-DRT_MAX_LIGHTS=%d -DRT_MAX_DEPTH=%d", RT_MAX_OBJECTS,
-                     RT_MAX_MATERIALS, RT_MAX_LIGHTS, RT_MAX_DEPTH);
-#ifdef RT_ACCURACY
-    if (k > 0 && (size_t)k < n)
-        snprintf(buf + k, n - (size_t)k, " -DRT_ACCURACY=%d", RT_ACCURACY);
-#else
-    (void)k;
-#endif
+    snprintf(buf, n, "-DRT_MAX_OBJECTS=%d -DRT_MAX_MATERIALS=%d "
+             "-DRT_MAX_LIGHTS=%d -DRT_MAX_DEPTH=%d -DRT_UNIT_BITS=%d",
+             RT_MAX_OBJECTS, RT_MAX_MATERIALS, RT_MAX_LIGHTS, RT_MAX_DEPTH,
+             RT_UNIT_BITS);
 }
 
 #define STRICT "-std=c99 -pedantic -Wall -Wextra -Werror -Wshadow -Wundef " \
@@ -278,10 +273,9 @@ static void check_guards(void)
             CHECK(compile_alone(i, defs) != 0 && log_has("RT_MAX_OBJECTS"));
         }
     }
-#ifdef RT_ACCURACY
-    snprintf(defs, sizeof defs, "-DRT_ACCURACY=%d", RT_ACCURACY == 0);
-    CHECK(compile_alone(0, defs) != 0 && log_has("RT_ACCURACY"));
-#endif
+    snprintf(defs, sizeof defs, "-DRT_UNIT_BITS=%d",
+             RT_UNIT_BITS > 16 ? RT_UNIT_BITS - 1 : RT_UNIT_BITS + 1);
+    CHECK(compile_alone(0, defs) != 0 && log_has("RT_UNIT_BITS"));
     snprintf(defs, sizeof defs, "-DRT_MAX_DEPTH=%d", RT_MAX_DEPTH + 1);
     CHECK(compile_alone(0, defs) != 0 && log_has("RT_MAX_DEPTH"));
 }

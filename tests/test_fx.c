@@ -6,11 +6,6 @@
  * magnitude ranges. mul, div, recip, sqrt and sqrt_q32 must be correctly
  * rounded (<= 0.5 ulp) and equal the exactly rounded value; isqrt64 must be
  * the exact floor. The measured maximum error of each op is printed.
- *
- * Built with RT_ACCURACY=0 (fast) or 2 (precise), the same inputs are held
- * to that setting's contract (fx_math.h): fast mul and from_q32 equal the
- * floor, recip the ceiling of the magnitude, div is within 2 ulps and the
- * roots within 1 ulp; precise rounding breaks ties to even.
  */
 #include <stdint.h>
 #include <stdlib.h>
@@ -103,34 +98,15 @@ static fx_t sat128(i128 v)
     return v > FX_MAX ? FX_MAX : v < FX_MIN ? FX_MIN : (fx_t)v;
 }
 
-/* n / d (d > 0) rounded to nearest, ties toward +infinity, saturated. */
+/* n / d (d > 0) rounded to nearest, ties toward +infinity, saturated: how
+ * fx_mul and fx_from_q32 round. */
 static fx_t round_up_ties(i128 n, i128 d)
 {
     return sat128(floordiv(2 * n + d, 2 * d));
 }
 
-/* n / d (d > 0) rounded to nearest, ties to even, saturated. */
-static fx_t round_even_ties(i128 n, i128 d)
-{
-    i128 q = floordiv(n, d), r2 = 2 * (n - q * d); /* 0 <= r2 < 2d */
-    if (r2 > d || (r2 == d && (q & 1)))
-        q++;
-    return sat128(q);
-}
-
-/* n / d (d > 0) rounded as this build rounds fx_mul and fx_from_q32. */
-static fx_t round_setting(i128 n, i128 d)
-{
-#if RT_ACCURACY == 0
-    return sat128(floordiv(n, d));
-#elif RT_ACCURACY == 1
-    return round_up_ties(n, d);
-#else
-    return round_even_ties(n, d);
-#endif
-}
-
-/* n / d (d != 0) rounded to nearest, ties away from zero, saturated. */
+/* n / d (d != 0) rounded to nearest, ties away from zero, saturated: how
+ * fx_div and fx_recip round. */
 static fx_t round_away_ties(i128 n, i128 d)
 {
     if (d < 0) {
@@ -159,17 +135,6 @@ static int is_rounded_sqrt(u128 a, u128 r)
     if (!(4 * a < hi))
         return 0;
     return r == 0 || (2 * r - 1) * (2 * r - 1) < 4 * a;
-}
-
-/* The root r of a is acceptable in this build: correctly rounded, or
- * (fast) strictly within 1 of sqrt(a): (r - 1)^2 < a < (r + 1)^2. */
-static int sqrt_ok(u128 a, u128 r)
-{
-#if RT_ACCURACY == 0
-    return a < (r + 1) * (r + 1) && (r == 0 || (r - 1) * (r - 1) < a);
-#else
-    return is_rounded_sqrt(a, r);
-#endif
 }
 
 static long double sqrt_err(long double x, uint64_t r)
@@ -209,9 +174,6 @@ static void test_truth(void)
 {
     CHECK_EQ(round_up_ties(3, 2), 2);
     CHECK_EQ(round_up_ties(-3, 2), -1);
-    CHECK_EQ(round_even_ties(3, 2), 2);
-    CHECK_EQ(round_even_ties(5, 2), 2);
-    CHECK_EQ(round_even_ties(-5, 2), -2);
     CHECK_EQ(round_away_ties(-3, 2), -2);
     CHECK_EQ(round_away_ties(3, -2), -2);
     CHECK_EQ(floordiv(-1, 3), -1);
@@ -268,19 +230,8 @@ static void test_sat_from_q32_misc(void)
     CHECK_EQ(fx_from_q32(INT64_MAX), FX_MAX);
     CHECK_EQ(fx_from_q32(INT64_MIN), FX_MIN);
     CHECK_EQ(fx_from_q32((int64_t)1 << 32), FX_ONE);
-#if RT_ACCURACY == 0
-    CHECK_EQ(fx_from_q32(0x8000), 0);   /* floor */
-    CHECK_EQ(fx_from_q32(-0x8000), -1);
-    CHECK_EQ(fx_from_q32(0xFFFF), 0);
-#elif RT_ACCURACY == 1
     CHECK_EQ(fx_from_q32(0x8000), 1);   /* tie: toward +infinity */
     CHECK_EQ(fx_from_q32(-0x8000), 0);  /* tie: toward +infinity */
-#else
-    CHECK_EQ(fx_from_q32(0x8000), 0);   /* tie: to even */
-    CHECK_EQ(fx_from_q32(0x18000), 2);
-    CHECK_EQ(fx_from_q32(-0x8000), 0);
-    CHECK_EQ(fx_from_q32(-0x18000), -2);
-#endif
     CHECK_EQ(fx_from_q32(-0x8001), -1);
     CHECK_EQ(fx_floor_int(FX(-0.5)), -1);
     CHECK_EQ(fx_floor_int(FX(2.75)), 2);
@@ -297,7 +248,7 @@ static void test_sat_from_q32_misc(void)
     long bad = 0;
     for (long i = 0; i < N_RANDOM; i++) {
         int64_t q = (int64_t)rnd64() >> (rnd32() % 64);
-        if (fx_from_q32(q) != round_setting(q, 65536)) {
+        if (fx_from_q32(q) != round_up_ties(q, 65536)) {
             bad++;
             SHOW_FAIL("fx_from_q32(%lld)\n", (long long)q);
         }
@@ -355,19 +306,8 @@ static void test_mul(void)
     CHECK_EQ(fx_mul(FX(181.0), FX(181.0)), FX(32761.0));
     CHECK_EQ(fx_mul(FX(182.0), FX(182.0)), FX_MAX);
     CHECK_EQ(fx_mul(FX(-182.0), FX(182.0)), FX_MIN);
-#if RT_ACCURACY == 0
-    CHECK_EQ(fx_mul(1, FX_HALF), 0);   /* floor */
-    CHECK_EQ(fx_mul(-1, FX_HALF), -1);
-    CHECK_EQ(fx_mul(3, FX_HALF + 1), 1);
-#elif RT_ACCURACY == 1
     CHECK_EQ(fx_mul(1, FX_HALF), 1);   /* 0.5 ulp tie: toward +infinity */
     CHECK_EQ(fx_mul(-1, FX_HALF), 0);  /* -0.5 ulp tie: toward +infinity */
-#else
-    CHECK_EQ(fx_mul(1, FX_HALF), 0);   /* ties to even */
-    CHECK_EQ(fx_mul(3, FX_HALF), 2);
-    CHECK_EQ(fx_mul(-1, FX_HALF), 0);
-    CHECK_EQ(fx_mul(-3, FX_HALF), -2);
-#endif
     CHECK_EQ(fx_mul(-1, FX_HALF + 1), -1);
     for (long i = 0; i < N_RANDOM + ne * ne; i++) {
         fx_t a, b;
@@ -378,7 +318,7 @@ static void test_mul(void)
             a = rnd_fx();
             b = rnd_fx();
         }
-        fx_t r = fx_mul(a, b), want = round_setting((i128)a * b, 65536);
+        fx_t r = fx_mul(a, b), want = round_up_ties((i128)a * b, 65536);
         n++;
         if (r != want) {
             bad++;
@@ -392,41 +332,8 @@ static void test_mul(void)
     }
     report("fx_mul", max_err, n, bad);
     CHECK_EQ(bad, 0);
-#if RT_ACCURACY == 0
-    CHECK(max_err < 1.0L);
-#else
     CHECK(max_err <= 0.5L);
-#endif
 }
-
-/* n / d (d != 0) rounded to nearest as this build's fx_div and fx_recip
- * round: ties away from zero, or to even (precise). */
-static fx_t round_div(i128 n, i128 d)
-{
-#if RT_ACCURACY == 2
-    return d < 0 ? round_even_ties(-n, -d) : round_even_ties(n, d);
-#else
-    return round_away_ties(n, d);
-#endif
-}
-
-#if RT_ACCURACY == 0
-/* Fast division: r within 2 ulps of n / d, or the saturated end when n / d
- * is within 2 ulps of it or beyond. Returns 1 if r is acceptable. */
-static int div_fast_ok(fx_t r, i128 n, i128 d)
-{
-    if (d < 0) {
-        n = -n;
-        d = -d;
-    }
-    if (r == FX_MAX && n >= ((i128)FX_MAX - 2) * d)
-        return 1;
-    if (r == FX_MIN && n <= ((i128)FX_MIN + 2) * d)
-        return 1;
-    i128 e = (i128)r * d - n;
-    return (e < 0 ? -e : e) <= 2 * d;
-}
-#endif
 
 static void check_div(fx_t a, fx_t b, long *bad, long double *max_err)
 {
@@ -434,11 +341,7 @@ static void check_div(fx_t a, fx_t b, long *bad, long double *max_err)
     if (b == 0)
         want = a >= 0 ? FX_MAX : FX_MIN;
     else
-        want = round_div((i128)a * 65536, b);
-#if RT_ACCURACY == 0
-    if (b != 0 && div_fast_ok(r, (i128)a * 65536, b))
-        want = r;
-#endif
+        want = round_away_ties((i128)a * 65536, b);
     if (r != want) {
         (*bad)++;
         SHOW_FAIL("fx_div(%d, %d) = %d, want %d\n", a, b, r, want);
@@ -463,28 +366,11 @@ static void test_div(void)
     CHECK_EQ(fx_div(FX_MIN, 0), FX_MIN);
     CHECK_EQ(fx_div(FX_MIN, -FX_ONE), FX_MAX);
     CHECK_EQ(fx_div(FX_MIN, FX_ONE), FX_MIN);
-#if RT_ACCURACY == 0
-    CHECK_EQ(fx_div(FX_MAX, FX_MIN), -FX_ONE + 1); /* -(1 - 2^-31), truncated */
-#else
     CHECK_EQ(fx_div(FX_MAX, FX_MIN), -FX_ONE);
-#endif
     CHECK_EQ(fx_div(FX_ONE, 1), FX_MAX);
-#if RT_ACCURACY == 0
-    CHECK_EQ(fx_div(FX_ONE, 3), 0x55555555); /* truncated */
-    CHECK_EQ(fx_div(1, 2 * FX_ONE), 0);
-    CHECK_EQ(fx_div(-1, 2 * FX_ONE), 0);
-    CHECK_EQ(fx_div(FX(7.0), FX(2.0)), FX(3.5)); /* exact quotients stay */
-#elif RT_ACCURACY == 1
     CHECK_EQ(fx_div(FX_ONE, 3), 0x55555555);
     CHECK_EQ(fx_div(1, 2 * FX_ONE), 1);   /* 0.5 ulp: away from zero */
     CHECK_EQ(fx_div(-1, 2 * FX_ONE), -1); /* -0.5 ulp: away from zero */
-#else
-    CHECK_EQ(fx_div(FX_ONE, 3), 0x55555555);
-    CHECK_EQ(fx_div(1, 2 * FX_ONE), 0);   /* 0.5 ulp: to even */
-    CHECK_EQ(fx_div(3, 2 * FX_ONE), 2);
-    CHECK_EQ(fx_div(-1, 2 * FX_ONE), 0);
-    CHECK_EQ(fx_div(-3, 2 * FX_ONE), -2);
-#endif
     CHECK_EQ(fx_div(1, 2 * FX_ONE + 1), 0);
     CHECK_EQ(fx_div(FX(-16384.0), FX_HALF), FX_MIN); /* exactly -32768 */
     CHECK_EQ(fx_div(FX(16384.0), FX_HALF), FX_MAX);
@@ -514,11 +400,7 @@ static void test_div(void)
     }
     report("fx_div", max_err, n, bad);
     CHECK_EQ(bad, 0);
-#if RT_ACCURACY == 0
-    CHECK(max_err <= 2.0L);
-#else
     CHECK(max_err <= 0.5L);
-#endif
 }
 
 static void test_recip(void)
@@ -532,28 +414,15 @@ static void test_recip(void)
     CHECK_EQ(fx_recip(-1), FX_MIN);
     CHECK_EQ(fx_recip(2), FX_MAX);
     CHECK_EQ(fx_recip(-2), FX_MIN); /* exactly -32768 */
-#if RT_ACCURACY == 0
-    CHECK_EQ(fx_recip(3), 0x55555556); /* rounded away from zero */
-    CHECK_EQ(fx_recip(-3), -0x55555556);
-#else
     CHECK_EQ(fx_recip(3), 0x55555555);
-#endif
     CHECK_EQ(fx_recip(FX_MIN), -2);
     CHECK_EQ(fx_recip(FX_ONE), FX_ONE);
     CHECK_EQ(fx_recip(-FX_ONE), -FX_ONE);
     for (long i = 0; i < N_RANDOM + ne; i++, n++) {
         fx_t a = i < ne ? e[i] : rnd_fx();
         fx_t r = fx_recip(a);
-#if RT_ACCURACY == 0
-        /* The ceiling of the magnitude, ceil(x) = -floor(-x). */
-        i128 ua = a < 0 ? -(i128)a : a;
-        i128 c = ua == 0 ? 0 : -floordiv(-((i128)1 << 32), ua);
-        fx_t want = a == 0 ? FX_MAX : sat128(a < 0 ? -c : c);
-        if (r != want) {
-#else
-        fx_t want = a == 0 ? FX_MAX : round_div((i128)1 << 32, a);
+        fx_t want = a == 0 ? FX_MAX : round_away_ties((i128)1 << 32, a);
         if (r != want || r != fx_div(FX_ONE, a)) {
-#endif
             bad++;
             SHOW_FAIL("fx_recip(%d) = %d, want %d\n", a, r, want);
         }
@@ -565,11 +434,7 @@ static void test_recip(void)
     }
     report("fx_recip", max_err, n, bad);
     CHECK_EQ(bad, 0);
-#if RT_ACCURACY == 0
-    CHECK(max_err < 1.0L);
-#else
     CHECK(max_err <= 0.5L);
-#endif
 }
 
 static void check_sqrt(fx_t a, long *bad, long double *max_err)
@@ -583,7 +448,7 @@ static void check_sqrt(fx_t a, long *bad, long double *max_err)
         return;
     }
     u128 x = (u128)a << 16;
-    if (r < 0 || !sqrt_ok(x, (u128)r)) {
+    if (r < 0 || !is_rounded_sqrt(x, (u128)r)) {
         (*bad)++;
         SHOW_FAIL("fx_sqrt(%d) = %d\n", a, r);
     }
@@ -629,11 +494,7 @@ static void test_sqrt(void)
         check_sqrt(rnd_fx(), &bad, &max_err);
     report("fx_sqrt", max_err, n, bad);
     CHECK_EQ(bad, 0);
-#if RT_ACCURACY == 0
-    CHECK(max_err < 1.0L);
-#else
     CHECK(max_err <= 0.5L); /* long double cannot resolve 0.5 - 2^-35 */
-#endif
 }
 
 static void check_sqrt_q32(uint64_t a, long *bad, long double *max_err)
@@ -645,7 +506,7 @@ static void check_sqrt_q32(uint64_t a, long *bad, long double *max_err)
         SHOW_FAIL("fx_isqrt64(%llu) = %u\n", (unsigned long long)a, f);
     }
     /* sqrt_q32: nearest, or 2^32 - 1 when the nearest is 2^32. */
-    int ok = sqrt_ok(a, r) ||
+    int ok = is_rounded_sqrt(a, r) ||
              (r == 0xFFFFFFFFu && is_rounded_sqrt(a, (u128)1 << 32));
     if (!ok) {
         (*bad)++;
@@ -699,11 +560,7 @@ static void test_sqrt_q32_isqrt64(void)
         check_sqrt_q32(rnd64(), &bad, &max_err);
     report("fx_sqrt_q32 / fx_isqrt64", max_err, n, bad);
     CHECK_EQ(bad, 0);
-#if RT_ACCURACY == 0
-    CHECK(max_err < 1.0L);
-#else
     CHECK(max_err <= 0.5L); /* long double cannot resolve 0.5 - 2^-35 */
-#endif
 }
 
 /* fx_floor_div: the exact floor quotient and remainder for every divisor

@@ -5,12 +5,6 @@
  * vectors, and on at least 1,000,000 seeded pseudo-random vectors per
  * operation. Dot, cross and the squared length are exact or rounded once;
  * length is correctly rounded; normalize is within 1 ulp per component.
- *
- * Built with RT_ACCURACY=0 (fast) or 2 (precise), the same checks hold each
- * operation to that setting's contract (fx_math.h, fx_vec.h): the single
- * roundings go down (fast) or to even (precise), fast length is within
- * 1 ulp and fast normalize within 0.7 ulp, precise normalize is correctly
- * rounded.
  */
 #include <math.h>
 #include <stdint.h>
@@ -70,19 +64,11 @@ static fx_t sat128(i128 v)
     return v > FX_MAX ? FX_MAX : v < FX_MIN ? FX_MIN : (fx_t)v;
 }
 
-/* n / 2^16 rounded as this build's fx_mul and fx_from_q32 round (to
- * nearest with ties toward +infinity; fast: down; precise: ties to even),
- * not saturated. >> on i128 floors (checked). */
+/* n / 2^16 rounded as fx_mul and fx_from_q32 round (to nearest, ties
+ * toward +infinity), not saturated. >> on i128 floors (checked). */
 static i128 round16_wide(i128 n)
 {
-#if RT_ACCURACY == 0
-    return n >> 16;
-#elif RT_ACCURACY == 1
     return (n + 0x8000) >> 16;
-#else
-    i128 q = n >> 16, r = n & 0xFFFF;
-    return q + (r > 0x8000 || (r == 0x8000 && (q & 1)));
-#endif
 }
 
 /* The same, saturated. */
@@ -213,17 +199,8 @@ static void test_dot_cross_len2(void)
              FX_MAX);
     CHECK_EQ(fx_v3_dot(fx_v3(FX_MAX, FX_MIN, 0), fx_v3(FX_MAX, FX_MAX, 0)),
              -32768); /* (2^31 - 1)^2 - 2^31 (2^31 - 1) = -(2^31 - 1) */
-#if RT_ACCURACY == 0
-    CHECK_EQ(fx_v3_dot(fx_v3(1, 0, 0), fx_v3(FX_HALF, 0, 0)), 0); /* down */
-    CHECK_EQ(fx_v3_dot(fx_v3(-1, 0, 0), fx_v3(FX_HALF, 0, 0)), -1);
-#elif RT_ACCURACY == 1
     CHECK_EQ(fx_v3_dot(fx_v3(1, 0, 0), fx_v3(FX_HALF, 0, 0)), 1); /* tie */
     CHECK_EQ(fx_v3_dot(fx_v3(-1, 0, 0), fx_v3(FX_HALF, 0, 0)), 0);
-#else
-    CHECK_EQ(fx_v3_dot(fx_v3(1, 0, 0), fx_v3(FX_HALF, 0, 0)), 0); /* even */
-    CHECK_EQ(fx_v3_dot(fx_v3(3, 0, 0), fx_v3(FX_HALF, 0, 0)), 2);
-    CHECK_EQ(fx_v3_dot(fx_v3(-3, 0, 0), fx_v3(FX_HALF, 0, 0)), -2);
-#endif
     CHECK_EQ((u128)fx_v3_len2_q32(mn), (u128)3 << 62);
     for (long i = 0; i < N_EDGE_VECS; i++, n++)
         for (long j = 0; j < N_EDGE_VECS; j += 37)
@@ -256,20 +233,11 @@ static void check_length(fx_vec3 a, long *bad)
      * root rounds to 2^31 or more. */
     u128 r = (u128)(uint32_t)l;
     int ok;
-#if RT_ACCURACY == 0
-    /* Fast: strictly within 1 ulp, (r - 1)^2 < l2 < (r + 1)^2. */
-    if (l == FX_MAX)
-        ok = l2 > (r - 1) * (r - 1);
-    else
-        ok = l >= 0 && l2 < (r + 1) * (r + 1) &&
-             (r == 0 || (r - 1) * (r - 1) < l2);
-#else
     if (l == FX_MAX)
         ok = 4 * l2 > (2 * r - 1) * (2 * r - 1);
     else
         ok = l >= 0 && 4 * l2 < (2 * r + 1) * (2 * r + 1) &&
              (r == 0 || (2 * r - 1) * (2 * r - 1) < 4 * l2);
-#endif
     if (!ok) {
         (*bad)++;
         SHOW_FAIL("fx_v3_length(%d, %d, %d) = %d\n", a.x, a.y, a.z, l);
@@ -292,8 +260,8 @@ static void test_length(void)
         check_length(edge_vec(i), &bad);
     for (long i = 0; i < N_RANDOM; i++, n++)
         check_length(rnd_vec(), &bad);
-    printf("fx_v3_length: %s over %ld vectors (%ld wrong)\n",
-           RT_ACCURACY == 0 ? "within 1 ulp" : "correctly rounded", n, bad);
+    printf("fx_v3_length: correctly rounded over %ld vectors (%ld wrong)\n",
+           n, bad);
     CHECK_EQ(bad, 0);
 }
 
@@ -317,29 +285,12 @@ static long double normalize_err(fx_vec3 a)
             return -1;
         if ((pa[k] < 0 && pu[k] > 0) || (pa[k] > 0 && pu[k] < 0))
             return -1; /* the sign is kept */
-#if RT_ACCURACY == 2
-        /* Correctly rounded, ties away from zero, on exact integers: with
-         * A = |a_k| and U = |u_k|, (2U - 1)^2 l2 <= (2^17 A)^2 <
-         * (2U + 1)^2 l2. */
-        u128 A = (u128)(pa[k] < 0 ? -(i128)pa[k] : pa[k]);
-        u128 U = (u128)(pu[k] < 0 ? -(i128)pu[k] : pu[k]);
-        u128 lhs = (A * A) << 34, L2 = (u128)l2;
-        if (!(lhs < (2 * U + 1) * (2 * U + 1) * L2 &&
-              (U == 0 || (2 * U - 1) * (2 * U - 1) * L2 <= lhs)))
-            return -1;
-#endif
     }
     return worst;
 }
 
 /* Largest error allowed for a component of fx_v3_normalize, in ulps. */
-#if RT_ACCURACY == 0
-#define NORMALIZE_BOUND 0.7L
-#elif RT_ACCURACY == 1
 #define NORMALIZE_BOUND 1.0L /* 0.5 + 2^-4 measured */
-#else
-#define NORMALIZE_BOUND 0.5L
-#endif
 
 static void check_normalize(fx_vec3 a, long *bad, long double *max_err,
                             fx_vec3 *worst)

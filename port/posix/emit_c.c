@@ -18,22 +18,21 @@
 
 #include "emit_c.h"
 
-/* The settings the parsed values depend on: the derived fields come from
- * the math layer (RT_ACCURACY, where the tree has it), and a scene without
- * a depth gets RT_MAX_DEPTH. The generated file refuses to compile under
+/* The settings the parsed values depend on: the derived fields hold unit
+ * vectors with RT_UNIT_BITS fraction bits, and a scene without a depth
+ * gets RT_MAX_DEPTH. The generated file refuses to compile under
  * other values. A new setting that changes what rt_parse() produces
  * belongs here, and in FW_HOST_DEFS of mk/firmware.mk. */
 static void put_settings_guard(FILE *f)
 {
     fprintf(f, "/* The values below depend on these settings "
                "(rt_config.h). */\n");
-    fprintf(f, "#if RT_ACCURACY != %d || RT_UNIT_BITS != %d || "
-               "RT_MAX_DEPTH != %d\n",
-            (int)RT_ACCURACY, (int)RT_UNIT_BITS, (int)RT_MAX_DEPTH);
-    fprintf(f, "#error \"generated for RT_ACCURACY %d, RT_UNIT_BITS %d and "
-               "RT_MAX_DEPTH %d: regenerate it with a fixtrace built with "
-               "this build's values\"\n#endif\n",
-            (int)RT_ACCURACY, (int)RT_UNIT_BITS, (int)RT_MAX_DEPTH);
+    fprintf(f, "#if RT_UNIT_BITS != %d || RT_MAX_DEPTH != %d\n",
+            (int)RT_UNIT_BITS, (int)RT_MAX_DEPTH);
+    fprintf(f, "#error \"generated for RT_UNIT_BITS %d and RT_MAX_DEPTH %d: "
+               "regenerate it with a fixtrace built with this build's "
+               "values\"\n#endif\n",
+            (int)RT_UNIT_BITS, (int)RT_MAX_DEPTH);
 }
 
 typedef struct {
