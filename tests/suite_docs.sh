@@ -21,8 +21,10 @@
 #   it (the accuracy table, the adaptive table and --build-flags are
 #   measured again here) or the table that tool wrote (the QEMU figures of
 #   port/baremetal/README.md and docs/bench.md, quoted in README.md,
-#   docs/effects.md, docs/embedding.md and docs/accuracy.md); and every
-#   build/posix-*/fixtrace a command block runs is built in that block.
+#   docs/effects.md, docs/embedding.md and docs/accuracy.md), and every
+#   figure docs/accuracy.md derives follows its table
+#   (tools/accuracy_report.sh --check); and every build/posix-*/fixtrace a
+#   command block runs is built in that block.
 set -u
 cd "$(dirname "$0")/.."
 FT=${FIXTRACE:-build/posix/fixtrace}
@@ -563,6 +565,39 @@ else
         "tools/adaptive_table.sh measures (run it with --write):" \
         "$(head -c 400 "$tmp/err")"
 fi
+
+# docs/accuracy.md is written by tools/accuracy_report.sh from its table:
+# every figure its text derives (ratios, savings, targets, the chart)
+# must follow the table. The table's default rows are measurements other
+# tools make too: the firmware costs are docs/bench.md's per-scene ones,
+# the errors at 1 spp what tools/reference_table.sh measured above, and
+# the seed at 16 spp the adaptive table's.
+if bash tools/accuracy_report.sh --check 2>"$tmp/err"; then
+    ok
+else
+    bad "docs/accuracy.md or its chart does not follow its table" \
+        "(run make accuracy): $(head -c 600 "$tmp/err")"
+fi
+acc_row() { # scene spp depth -> the default row's cells, '|'-separated
+    awk -F'|' -v s="$1" -v n="$2" -v d="$3" '
+        { for (i = 2; i <= 13; i++) { c[i] = $i; gsub(/^ +| +$/, "", c[i]) } }
+        c[2] == "default" && c[3] == s && c[4] == n && (d == "" || c[5] == d) {
+            for (i = 2; i <= 13; i++) printf "%s|", c[i]; print ""; exit }' docs/accuracy.md
+}
+for sc in $(awk -F'|' '$2 ~ /^ default $/ && $4 ~ /^ 1 $/ { gsub(/ /, "", $3); print $3 }' docs/accuracy.md | sort -u); do
+    depth=$(awk '/^image /{for (i = 1; i < NF; i++) if ($i == "depth") print $(i + 1)}' "scenes/$sc.scene")
+    IFS='|' read -r _ _ _ _ a3 a0 _ _ apsnr amax abad _ <<<"$(acc_row "$sc" 1 "$depth")"
+    IFS='|' read -r _ _ b3 b0 _ <<<"$(grep -E "^\| $sc \|" docs/bench.md | head -n 1)"
+    check_fig "docs/accuracy.md default $sc M3" "$a3" "$b3"
+    check_fig "docs/accuracy.md default $sc M0" "$a0" "$b0"
+    IFS='|' read -r _ _ rpsnr rmax rbad _ <<<"$(grep -E "^\| $sc \|" "$tmp/acc" | head -n 1)"
+    check_fig "docs/accuracy.md default $sc PSNR" "$apsnr" "$(echo "$rpsnr" | tr -d ' ')"
+    check_fig "docs/accuracy.md default $sc max error" "$amax" "$(echo "$rmax" | sed 's/ //g; s#/255##')"
+    check_fig "docs/accuracy.md default $sc > 2/255" "${abad%\%}" "$(echo "$rbad" | tr -d ' %')"
+done
+IFS='|' read -r _ _ _ _ _ _ _ _ apsnr _ <<<"$(acc_row seed 16 "")"
+ad16=$(sed -nE 's/^\| 320x240 \| 16 spp, every pixel \| [0-9,]+ \| ([0-9.]+) dB \|$/\1/p' docs/effects.md)
+check_fig "docs/accuracy.md default seed at 16 spp PSNR (docs/effects.md's adaptive table)" "$apsnr" "$ad16"
 
 # docs/effects.md's --build-flags examples, as the tool prints them.
 awk '/^    \$ build\/posix\/fixtrace --build-flags / { s = $NF; getline; print s "|" $0 }' \

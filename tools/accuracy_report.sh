@@ -3,12 +3,56 @@
 # accuracy_report.sh: writes docs/accuracy.md and docs/accuracy.svg from the
 # measurements tools/accuracy.sh collected (build/accuracy/results.tsv).
 #   tools/accuracy_report.sh RESULTS.tsv M4F_SAME WIDTH HEIGHT RUNS SECONDS
+#   tools/accuracy_report.sh --check
+# --check reads the measurements back from docs/accuracy.md's table and
+# header, writes the page and the chart from them again (in a temporary
+# directory) and exits 1 if either differs from the committed one: every
+# figure the text derives (ratios, savings, targets met, the frontier, the
+# chart) must follow the table (tests/suite_docs.sh runs it).
 # Plain awk: no plotting package.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+if [ "${1:-}" = --check ]; then
+    tmp=$(mktemp -d)
+    trap 'rm -rf "$tmp"' EXIT
+    page=docs/accuracy.md
+    # The table's cells as the TSV they were written from: commas out,
+    # "–" back to "-", "∞ (identical)" back to "inf", the % sign off.
+    awk -F'|' '
+        /^\| setting \| scene \|/ { on = 1; next }
+        on && /^\|---/ { next }
+        on && !/^\|/ { exit }
+        on { out = ""
+             for (i = 2; i <= 13; i++) { c = $i; sub(/^ /, "", c); sub(/ $/, "", c)
+                 if (i >= 6 && i <= 8) gsub(/,/, "", c)
+                 if (c == "–") c = "-"
+                 if (c == "∞ (identical)") c = "inf"
+                 if (i == 12) sub(/%$/, "", c)
+                 out = out (i > 2 ? "\t" : "") c }
+             print out }' "$page" >"$tmp/results.tsv"
+    secs=$(sed -nE 's/^took ([0-9]+) s\. .*/\1/p' "$page")
+    runs=$(sed -nE 's/.*the median of ([0-9]+) runs.*/\1/p' "$page")
+    size=$(sed -nE 's/^([0-9]+x[0-9]+) pixels\. .*/\1/p' "$page")
+    same=$(sed -nE 's/^The M4F float32 image is byte-identical to the M3 soft-float one: ([a-z]+)\.$/\1/p' "$page")
+    if [ ! -s "$tmp/results.tsv" ] || [ -z "$secs" ] || [ -z "$runs" ] ||
+        [ -z "$size" ] || [ -z "$same" ]; then
+        echo "accuracy_report: cannot read the measurements back from $page" >&2
+        exit 1
+    fi
+    ACC_MD=$tmp/accuracy.md ACC_SVG=$tmp/accuracy.svg bash "$0" \
+        "$tmp/results.tsv" "$same" "${size%x*}" "${size#*x}" "$runs" "$secs"
+    rc=0
+    for f in accuracy.md accuracy.svg; do
+        cmp -s "$tmp/$f" "docs/$f" && continue
+        echo "accuracy_report: docs/$f does not follow docs/accuracy.md's table:" >&2
+        diff "docs/$f" "$tmp/$f" | head -n 20 >&2
+        rc=1
+    done
+    exit $rc
+fi
 TSV=$1 M4SAME=$2 W=$3 H=$4 RUNS=$5 SECS=$6
-MD=docs/accuracy.md
-SVG=docs/accuracy.svg
+MD=${ACC_MD:-docs/accuracy.md}
+SVG=${ACC_SVG:-docs/accuracy.svg}
 
 # ---- Figures the text quotes (seed scene, 1 spp, its own depth) -------------
 
