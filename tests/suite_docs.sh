@@ -107,30 +107,63 @@ else
 fi
 
 # docs/embedding.md states sizeof(rt_scene) for the default capacities and
-# the micro:bit build's (mk/firmware.mk); both must match the headers.
+# the micro:bit build's (mk/boards/microbit.mk's FW_CAPS, read from there),
+# the formula behind them and the bytes per capacity; all must match the
+# headers. The sizes are kept for port/baremetal/README.md's checks below.
+MICROBIT_CAPS=$(sed -e :a -e '/\\$/N; s/\\\n//; ta' mk/boards/microbit.mk |
+    sed -n 's/^FW_CAPS :=//p' | tr ' ' '\n' | grep -E '^-DRT_MAX_' |
+    paste -sd' ' -)
+[ -n "$MICROBIT_CAPS" ] && ok ||
+    bad "mk/boards/microbit.mk's FW_CAPS has no RT_MAX_* capacity"
 cat >"$tmp/size.c" <<'EOF'
 #include <stdio.h>
 #include "rt_scene.h"
-int main(void) { printf("%u\n", (unsigned)sizeof(rt_scene)); return 0; }
+int main(void)
+{
+    printf("%u %d %d %d %d\n", (unsigned)sizeof(rt_scene), RT_MAX_MATERIALS,
+           RT_MAX_LIGHTS, RT_MAX_OBJECTS, RT_MAX_WIDTH);
+    return 0;
+}
 EOF
-MICROBIT_CAPS="-DRT_MAX_OBJECTS=16 -DRT_MAX_MATERIALS=12 -DRT_MAX_LIGHTS=2
-    -DRT_MAX_NAME=15"
-for caps in "" "$MICROBIT_CAPS"; do
-    # shellcheck disable=SC2086
-    if $CC -std=c99 -Icore $caps "$tmp/size.c" -o "$tmp/size" 2>"$tmp/err"; then
-        n=$("$tmp/size")
-        # As the page writes it: 19,632.
-        nc=$(echo "$n" | sed -E ':a; s/^([0-9]+)([0-9]{3})/\1,\2/; ta')
-        if grep -q "| $nc bytes |" docs/embedding.md; then
-            ok
-        else
-            bad "docs/embedding.md does not give sizeof(rt_scene) = $nc" \
-                "bytes (capacities: ${caps:-default}); update its table"
-        fi
-    else
-        bad "cannot compile a sizeof(rt_scene) probe: $(head -c 300 "$tmp/err")"
-    fi
-done
+probe() { # capacities... -> "sizeof materials lights objects width"
+    # shellcheck disable=SC2068
+    $CC -std=c99 -Icore $@ "$tmp/size.c" -o "$tmp/size" 2>"$tmp/err" &&
+        "$tmp/size"
+}
+th() { echo "$1" | sed -E ':a; s/^([0-9]+)([0-9]{3})/\1,\2/; ta'; }
+read -r scene_def mat_def lig_def obj_def width_def <<<"$(probe)"
+# shellcheck disable=SC2086
+read -r scene_mb mat_mb lig_mb obj_mb _ <<<"$(probe $MICROBIT_CAPS)"
+if [ -z "${scene_def:-}" ] || [ -z "${scene_mb:-}" ]; then
+    bad "cannot compile a sizeof(rt_scene) probe: $(head -c 300 "$tmp/err")"
+else
+    for spec in "default $mat_def $lig_def $obj_def $scene_def" \
+        "micro:bit $mat_mb $lig_mb $obj_mb $scene_mb"; do
+        # shellcheck disable=SC2086
+        set -- $spec
+        # As the page writes it: | default (...) | 32 | 4 | 128 | 19,628 bytes |
+        grep -qE "^\| $1 [^|]*\| $2 \| $3 \| $4 \| $(th "$5") bytes \|$" docs/embedding.md && ok ||
+            bad "docs/embedding.md's sizeof(rt_scene) row for the $1 build" \
+                "should read $2 materials, $3 lights, $4 objects: $(th "$5") bytes"
+    done
+    # The formula: a + b * materials + c * lights + d * objects, each
+    # coefficient measured by raising one capacity from 1 to 2.
+    one="-DRT_MAX_MATERIALS=1 -DRT_MAX_LIGHTS=1 -DRT_MAX_OBJECTS=1"
+    s1=$(probe $one | cut -d' ' -f1)
+    c_mat=$(($(probe "$one -URT_MAX_MATERIALS -DRT_MAX_MATERIALS=2" | cut -d' ' -f1) - s1))
+    c_lig=$(($(probe "$one -URT_MAX_LIGHTS -DRT_MAX_LIGHTS=2" | cut -d' ' -f1) - s1))
+    c_obj=$(($(probe "$one -URT_MAX_OBJECTS -DRT_MAX_OBJECTS=2" | cut -d' ' -f1) - s1))
+    c0=$((s1 - c_mat - c_lig - c_obj))
+    want="sizeof(rt_scene) = $c0 + $c_mat * RT_MAX_MATERIALS + $c_lig * RT_MAX_LIGHTS + $c_obj * RT_MAX_OBJECTS"
+    tr '\n' ' ' <docs/embedding.md | tr -s ' ' | grep -qF "$want" && ok ||
+        bad "docs/embedding.md's formula should read '$want'"
+    for spec in "OBJECTS $obj_def $c_obj" "MATERIALS $mat_def $c_mat" "LIGHTS $lig_def $c_lig"; do
+        # shellcheck disable=SC2086
+        set -- $spec
+        grep -qE "^\| \`RT_MAX_$1\` \| $2 \| $3 bytes each in \`rt_scene\`" docs/embedding.md && ok ||
+            bad "docs/embedding.md's configuration table: RT_MAX_$1 is $2, $3 bytes each in rt_scene"
+    done
+fi
 
 # --- embed_example.c runs on the host ----------------------------------------
 # A fake display: records the commands and their argument bytes, and
