@@ -21,7 +21,9 @@
 #   it (the accuracy table, the adaptive table and --build-flags are
 #   measured again here) or the table that tool wrote (the QEMU figures of
 #   port/baremetal/README.md and docs/bench.md, quoted in README.md,
-#   docs/effects.md, docs/embedding.md and docs/accuracy.md), and every
+#   docs/effects.md, docs/embedding.md and docs/accuracy.md), the sizes
+#   port/baremetal/README.md quotes follow from the scene, the headers,
+#   the board files and its table, and every
 #   figure docs/accuracy.md derives follows its table
 #   (tools/accuracy_report.sh --check); and every build/posix-*/fixtrace a
 #   command block runs is built in that block.
@@ -486,13 +488,14 @@ same_num() { # a b: equal as numbers (commas ignored)
     awk -v a="$(nocomma "$1")" -v b="$(nocomma "$2")" 'BEGIN { exit !(a + 0 == b + 0 && a != "") }'
 }
 # board_fig BOARD MODE FIELD: from the table tools/boards_table.sh writes
-# (fields: instructions, ipp, stack, flash, ram).
+# (fields: instructions, ipp, stack, flash, ram, reserved).
 board_fig() {
     awk -F'|' -v b="$1" -v m="$2" -v f="$3" '
         { gsub(/ /, "", $2); gsub(/ /, "", $3) }
         $2 == b && $3 == m {
             i = 8; if (f == "instructions") i = 4; if (f == "ipp") i = 5
             if (f == "stack") i = 6; if (f == "flash") i = 7
+            if (f == "reserved") i = 9
             v = $i; gsub(/ /, "", v); print v; exit }' port/baremetal/README.md
 }
 check_fig() { # what, quoted, measured
@@ -504,6 +507,42 @@ check_fig() { # what, quoted, measured
         bad "$1 says '$2', the measurement says '$3'"
     fi
 }
+
+# port/baremetal/README.md: its sample `make qemu` output is the an385
+# tables row, and the sizes the boards section quotes follow from the
+# scene, the headers, the board files and the table itself.
+pb=port/baremetal/README.md
+awk '/^`make qemu BOARD=an385 WIDTH=320 HEIGHT=240` prints/ { on = 1; next }
+     on && /^    wrote / { exit }
+     on && /^    [a-z_]+ [0-9.]+$/ { print $1, $2 }' "$pb" >"$tmp/pbex"
+ex() { awk -v k="$1" '$1 == k { print $2 }' "$tmp/pbex"; }
+check_fig "$pb sample output: instructions" "$(ex instructions)" "$(board_fig an385 tables instructions)"
+check_fig "$pb sample output: pixels" "$(ex pixels)" $((320 * 240))
+check_fig "$pb sample output: stack_bytes" "$(ex stack_bytes)" "$(board_fig an385 tables stack)"
+check_fig "$pb sample output: stack_reserved" "$(ex stack_reserved)" "$(board_fig an385 tables reserved)"
+check_fig "$pb sample output: instructions_per_pixel" "$(ex instructions_per_pixel)" "$(board_fig an385 tables ipp)"
+pbtext=$(sed -n '/^<!-- begin boards /,/^<!-- end boards -->/p' "$pb" | tr '\n' ' ' | tr -s ' ')
+pbq() { echo "$pbtext" | sed -nE "s/.*$1.*/\\1/p" | tr -d ,; }
+seed_objs=$("$FT" --emit-c scenes/seed.scene | sed -nE 's/^#define FW_SCENE_OBJECTS ([0-9]+).*/\1/p')
+seed_depth=$(awk '/^image /{for (i = 1; i < NF; i++) if ($i == "depth") print $(i + 1)}' scenes/seed.scene)
+check_fig "$pb: the seed's objects" "$(pbq 'scenes\/seed\.scene`: ([0-9]+) objects')" "$seed_objs"
+check_fig "$pb: the seed's depth" "$(pbq 'objects, depth ([0-9]+)\)')" "$seed_depth"
+check_fig "$pb: the seed's text" "$(pbq "the seed's text \\(([0-9,]+) bytes")" "$(wc -c <scenes/seed.scene)"
+check_fig "$pb: the default rt_scene" "$(pbq 'default-capacity `rt_scene` \(([0-9,]+) bytes')" "${scene_def:-}"
+check_fig "$pb: the large boards' row (pixels)" "$(pbq 'a ([0-9]+)-pixel row')" "${width_def:-}"
+check_fig "$pb: the large boards' row (bytes)" "$(pbq '-pixel row \(([0-9,]+) bytes')" "$((3 * ${width_def:-0}))"
+mb_row=$(sed -e :a -e '/\\$/N; s/\\\n//; ta' mk/boards/microbit.mk |
+    sed -nE 's/^FW_CAPS :=.*-DFW_ROW_PIXELS=([0-9]+).*/\1/p')
+check_fig "$pb: the micro:bit's rt_scene" "$(pbq 'stack included \(`rt_scene` ([0-9,]+) bytes')" "${scene_mb:-}"
+check_fig "$pb: the micro:bit's row" "$(pbq 'stack included \(`rt_scene` [0-9,]+ bytes, row ([0-9,]+) bytes')" "$((3 * ${mb_row:-0}))"
+mb_ram=$(sed -nE 's/^ *ram .*LENGTH = ([0-9]+)K.*/\1/p' linker/microbit.ld)
+check_fig "$pb: the micro:bit's RAM" "$(pbq 'The micro:bit uses [0-9,]+ of its ([0-9,]+) bytes')" "$((1024 * ${mb_ram:-0}))"
+for mode in text tables; do
+    used=$(($(board_fig microbit $mode ram | tr -d ,) + $(board_fig microbit $mode reserved | tr -d ,)))
+    if [ $mode = text ]; then q=$(pbq 'The micro:bit uses ([0-9,]+) of its')
+    else q=$(pbq 'bytes\), and ([0-9,]+) with the tables'); fi
+    check_fig "$pb: the micro:bit's RAM in use, $mode build (RAM + stack reserved)" "$q" "$used"
+done
 
 # README's board table: each row against its board's tables row.
 boards=$(cd mk/boards && ls *.mk | sed 's/\.mk$//')
