@@ -687,6 +687,73 @@ while IFS='|' read -r scene want; do
         bad "docs/effects.md: --build-flags $scene prints '$got', the page shows '$want'"
 done <"$tmp/bf"
 
+# Command output the pages quote, produced again: every `$ build/posix/
+# fixtrace ... --stats ...` block prints what it shows (the lines it
+# shows, in any order among the others).
+for md in README.md docs/*.md port/baremetal/README.md; do
+    awk '/^    \$ build\/posix\/fixtrace .*--stats/ { n++; sub(/^    \$ /, ""); print "cmd " n " " $0; on = 1; next }
+         on && /^    [a-z_]+ [0-9.]+$/ { print "out " n " " $1 " " $2; next }
+         { on = 0 }' "$md" >"$tmp/statq"
+    while read -r kind n rest; do
+        [ "$kind" = cmd ] || continue
+        # shellcheck disable=SC2086
+        set -- $rest
+        shift
+        args=()
+        while [ $# -gt 0 ]; do
+            if [ "$1" = -o ]; then args+=(-o "$tmp/stat.ppm"); shift
+            else args+=("$1"); fi
+            shift
+        done
+        "$FT" "${args[@]}" 2>"$tmp/statout" >/dev/null
+        awk -v n="$n" '$1 == "out" && $2 == n { print $3, $4 }' "$tmp/statq" |
+            while read -r k v; do
+                got=$(awk -v k="$k" '$1 == k { print $2 }' "$tmp/statout")
+                [ "$got" = "$v" ] && echo ok ||
+                    echo "FAILED: $md shows '$k $v' from '$rest', it prints '$k $got'"
+            done
+    done <"$tmp/statq"
+done >"$tmp/statres"
+grep -v '^ok$' "$tmp/statres"
+pass=$((pass + $(grep -c '^ok$' "$tmp/statres")))
+fail=$((fail + $(grep -c '^FAILED' "$tmp/statres")))
+[ "$(wc -l <"$tmp/statres")" -ge 5 ] && ok ||
+    bad "fewer than 5 quoted --stats lines found in the docs"
+
+# docs/effects.md's make firmware messages: the capacities the diffuse
+# scene gets are its counts, and many.scene is refused on the micro:bit
+# with its own count and the board's limit (mk/firmware.mk prints it).
+counts() { # scene -> "objects materials lights" as --emit-c gives them
+    "$FT" --emit-c "$1" | awk '/^#define FW_SCENE_OBJECTS / { o = $3 }
+        /^#define FW_SCENE_MATERIALS / { m = $3 } /^#define FW_SCENE_LIGHTS / { l = $3 }
+        END { print o, m, l }'
+}
+read -r d_o d_m d_l <<<"$(counts scenes/diffuse.scene)"
+grep -qE "^    EFFECTS scenes/diffuse\.scene: .* RT_MAX_OBJECTS=$d_o RT_MAX_MATERIALS=$d_m RT_MAX_LIGHTS=$d_l$" docs/effects.md && ok ||
+    bad "docs/effects.md's EFFECTS line should end RT_MAX_OBJECTS=$d_o RT_MAX_MATERIALS=$d_m RT_MAX_LIGHTS=$d_l (the diffuse scene's counts)"
+mb_cap() { echo "$MICROBIT_CAPS" | tr ' ' '\n' | sed -nE "s/^-DRT_MAX_$1=([0-9]+)$/\\1/p"; }
+read -r many_o _ <<<"$(counts scenes/many.scene)"
+want="firmware: scenes/many.scene has $many_o objects, but the build for BOARD=microbit allows at most $(mb_cap OBJECTS) (RT_MAX_OBJECTS=$(mb_cap OBJECTS))"
+grep -qxF "        $want" docs/effects.md && ok ||
+    bad "docs/effects.md should show '$want'"
+if command -v arm-none-eabi-gcc >/dev/null 2>&1; then
+    got=$(${MAKE:-make} -s firmware BOARD=microbit SCENE=scenes/many.scene \
+        FW_BUILD="$tmp/fw-many" 2>&1 | grep '^firmware: ')
+    [ "$got" = "$want" ] && ok ||
+        bad "make firmware BOARD=microbit SCENE=scenes/many.scene says '$got', docs/effects.md shows '$want'"
+fi
+# The micro:bit's limits as README.md and docs/effects.md give them.
+mbq=$(tr '\n' ' ' <README.md | tr -s ' ' |
+    sed -nE 's/.*`microbit` \(nRF51, ([0-9]+) KB of RAM: at most ([0-9]+) objects, ([0-9]+) materials, ([0-9]+) lights and ([0-9]+) pixels wide\).*/\1 \2 \3 \4 \5/p')
+mb_px=$(sed -e :a -e '/\\$/N; s/\\\n//; ta' mk/boards/microbit.mk |
+    sed -nE 's/^FW_CAPS :=.*-DFW_ROW_PIXELS=([0-9]+).*/\1/p')
+want="$(sed -nE 's/^ *ram .*LENGTH = ([0-9]+)K.*/\1/p' linker/microbit.ld) $(mb_cap OBJECTS) $(mb_cap MATERIALS) $(mb_cap LIGHTS) $mb_px"
+[ "$mbq" = "$want" ] && ok ||
+    bad "README.md's micro:bit limits are '$mbq', mk/boards/microbit.mk and linker/microbit.ld say '$want' (KB, objects, materials, lights, pixels)"
+tr '\n' ' ' <docs/effects.md | tr -s ' ' |
+    grep -qF "the micro:bit's $(mb_cap OBJECTS) objects, $(mb_cap MATERIALS) materials and $(mb_cap LIGHTS) lights" && ok ||
+    bad "docs/effects.md should give the micro:bit's capacities as mk/boards/microbit.mk does ($MICROBIT_CAPS)"
+
 # Every build/posix-*/fixtrace a command block runs is built in that block
 # (build/posix is what `make` builds).
 for md in README.md docs/*.md port/baremetal/README.md; do
