@@ -544,6 +544,27 @@ for mode in text tables; do
     check_fig "$pb: the micro:bit's RAM in use, $mode build (RAM + stack reserved)" "$q" "$used"
 done
 
+# docs/porting.md's cost of the panel: the lm3s6965 and an385 tables rows
+# of the boards table, and what follows from them.
+ptext=$(tr '\n' ' ' <docs/porting.md | tr -s ' ')
+pq() { echo "$ptext" | sed -nE "s/.*$1.*/\\$2/p" | tr -d ,; } # regex, group
+lm_i=$(board_fig lm3s6965 tables instructions | tr -d ,)
+an_i=$(board_fig an385 tables instructions | tr -d ,)
+lm_f=$(board_fig lm3s6965 tables flash | tr -d ,)
+an_f=$(board_fig an385 tables flash | tr -d ,)
+panel=$((128 * 64))
+re='the lm3s6965 takes ([0-9,]+) instructions against the an385.s ([0-9,]+), that is ([0-9,]+) more, or ([0-9.]+) for each of the ([0-9,]+) pixels'
+check_fig "docs/porting.md: lm3s6965 instructions" "$(pq "$re" 1)" "$lm_i"
+check_fig "docs/porting.md: an385 instructions" "$(pq "$re" 2)" "$an_i"
+check_fig "docs/porting.md: the panel's instructions" "$(pq "$re" 3)" "$((lm_i - an_i))"
+check_fig "docs/porting.md: the panel's instructions per pixel shown" "$(pq "$re" 4)" \
+    "$(awk -v d=$((lm_i - an_i)) -v p=$panel 'BEGIN { printf "%.1f", d / p }')"
+check_fig "docs/porting.md: the panel's pixels" "$(pq "$re" 5)" "$panel"
+re='; ([0-9,]+) bytes of flash against ([0-9,]+), ([0-9,]+) more for the driver'
+check_fig "docs/porting.md: lm3s6965 flash" "$(pq "$re" 1)" "$lm_f"
+check_fig "docs/porting.md: an385 flash" "$(pq "$re" 2)" "$an_f"
+check_fig "docs/porting.md: the driver's flash" "$(pq "$re" 3)" "$((lm_f - an_f))"
+
 # README's board table: each row against its board's tables row.
 boards=$(cd mk/boards && ls *.mk | sed 's/\.mk$//')
 for b in $boards; do
