@@ -37,6 +37,11 @@ trap 'rm -rf "$tmp"' EXIT
 
 ok() { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAILED: $*"; }
+counts() { # scene -> "objects materials lights" as --emit-c gives them
+    "$FT" --emit-c "$1" | awk '/^#define FW_SCENE_OBJECTS / { o = $3 }
+        /^#define FW_SCENE_MATERIALS / { m = $3 } /^#define FW_SCENE_LIGHTS / { l = $3 }
+        END { print o, m, l }'
+}
 
 if [ ! -x "$FT" ]; then
     echo "FAILED: $FT not found (build it with make)"
@@ -656,6 +661,38 @@ else
     bad "tools/reference_table.sh failed: $(head -c 300 "$tmp/err")"
 fi
 
+# What README.md and docs/numerics.md say of the accuracy table: the
+# seed's targets are suite_reference's, mirrors is below the 40 dB
+# README.md names and at the figure numerics.md gives.
+mir=$(awk -F'|' '$2 ~ /^ mirrors $/ { gsub(/ /, "", $3); print $3 }' "$tmp/acc")
+rtext=$(tr '\n' ' ' <README.md | tr -s ' ')
+lim=$(echo "$rtext" | sed -nE 's/.*which is what holds `mirrors` below ([0-9.]+) dB.*/\1/p')
+awk -v m="$mir" -v l="$lim" 'BEGIN { exit !(m != "" && l != "" && m + 0 < l + 0) }' && ok ||
+    bad "README.md says mirrors is below '$lim' dB; tools/reference_table.sh measures '$mir'"
+ntext=$(tr '\n' ' ' <docs/numerics.md | tr -s ' ')
+nq=$(echo "$ntext" | sed -nE 's/.*holds `scenes\/mirrors\.scene` at ([0-9.]+) dB.*/\1/p')
+check_fig "docs/numerics.md mirrors PSNR" "$nq" "$(awk -v m="$mir" 'BEGIN { printf "%.1f", m }')"
+min_psnr=$(sed -nE 's/.*--min-psnr ([0-9.]+).*/\1/p' tests/suite_reference.sh | head -n 1)
+max_bad=$(sed -nE 's/.*--max-bad ([0-9.]+).*/\1/p' tests/suite_reference.sh | head -n 1)
+tq=$(echo "$rtext" | sed -nE 's/.*the seed scene to its target of ([0-9.]+) dB, ([0-9.]+)% of pixels within 2\/255.*/\1 \2/p')
+[ "$tq" = "$min_psnr $(awk -v b="$max_bad" 'BEGIN { print 100 - b }')" ] && ok ||
+    bad "README.md gives the seed's targets as '$tq' (dB, %); tests/suite_reference.sh holds it to --min-psnr $min_psnr --max-bad $max_bad"
+
+# README.md's gallery captions and make run: the scenes' own counts and
+# image lines.
+read -r many_o _ <<<"$(counts scenes/many.scene)"
+many_q=$(echo "$rtext" | sed -nE 's/.*`many`: ([0-9]+) shapes on a floor.*/\1/p')
+check_fig "README.md: many's shapes besides the floor" "$many_q" "$((many_o - 1))"
+read -r seed_o _ <<<"$(counts scenes/seed.scene)"
+words="zero one two three four five six seven eight nine ten eleven twelve"
+seed_q=$(echo "$rtext" | sed -nE 's/.*`seed`: every effect in ([a-z]+) objects.*/\1/p')
+check_fig "README.md: the seed's objects" "$(echo " $words " | awk -v w="$seed_q" '{ for (i = 1; i <= NF; i++) if ($i == w) print i - 1 }')" "$seed_o"
+mir_d=$(awk '/^image /{for (i = 1; i < NF; i++) if ($i == "depth") print $(i + 1)}' scenes/mirrors.scene)
+check_fig "README.md: mirrors' depth" "$(echo "$rtext" | sed -nE 's/.*`mirrors`: two facing mirrors, depth ([0-9]+).*/\1/p')" "$mir_d"
+seed_size=$(awk '/^image / { print $2 "x" $3 }' scenes/seed.scene)
+grep -qE "^    make run +# renders scenes/seed\.scene at $seed_size to seed\.ppm$" README.md && ok ||
+    bad "README.md's make run should render scenes/seed.scene at its own $seed_size"
+
 # docs/effects.md's adaptive table, every row and column, measured again.
 if FIXTRACE="$FT" bash tools/adaptive_table.sh --check 2>"$tmp/err"; then
     ok
@@ -744,11 +781,6 @@ fail=$((fail + $(grep -c '^FAILED' "$tmp/statres")))
 # docs/effects.md's make firmware messages: the capacities the diffuse
 # scene gets are its counts, and many.scene is refused on the micro:bit
 # with its own count and the board's limit (mk/firmware.mk prints it).
-counts() { # scene -> "objects materials lights" as --emit-c gives them
-    "$FT" --emit-c "$1" | awk '/^#define FW_SCENE_OBJECTS / { o = $3 }
-        /^#define FW_SCENE_MATERIALS / { m = $3 } /^#define FW_SCENE_LIGHTS / { l = $3 }
-        END { print o, m, l }'
-}
 read -r d_o d_m d_l <<<"$(counts scenes/diffuse.scene)"
 grep -qE "^    EFFECTS scenes/diffuse\.scene: .* RT_MAX_OBJECTS=$d_o RT_MAX_MATERIALS=$d_m RT_MAX_LIGHTS=$d_l$" docs/effects.md && ok ||
     bad "docs/effects.md's EFFECTS line should end RT_MAX_OBJECTS=$d_o RT_MAX_MATERIALS=$d_m RT_MAX_LIGHTS=$d_l (the diffuse scene's counts)"
