@@ -127,18 +127,19 @@ cat >"$tmp/size.c" <<'EOF'
 #include "rt_scene.h"
 int main(void)
 {
-    printf("%u %d %d %d %d\n", (unsigned)sizeof(rt_scene), RT_MAX_MATERIALS,
-           RT_MAX_LIGHTS, RT_MAX_OBJECTS, RT_MAX_WIDTH);
+    printf("%u %d %d %d %d %d\n", (unsigned)sizeof(rt_scene),
+           RT_MAX_MATERIALS, RT_MAX_LIGHTS, RT_MAX_OBJECTS, RT_MAX_WIDTH,
+           RT_MAX_NAME);
     return 0;
 }
 EOF
-probe() { # capacities... -> "sizeof materials lights objects width"
+probe() { # capacities... -> "sizeof materials lights objects width name"
     # shellcheck disable=SC2068
     $CC -std=c99 -Icore $@ "$tmp/size.c" -o "$tmp/size" 2>"$tmp/err" &&
         "$tmp/size"
 }
 th() { echo "$1" | sed -E ':a; s/^([0-9]+)([0-9]{3})/\1,\2/; ta'; }
-read -r scene_def mat_def lig_def obj_def width_def <<<"$(probe)"
+read -r scene_def mat_def lig_def obj_def width_def name_def <<<"$(probe)"
 # shellcheck disable=SC2086
 read -r scene_mb mat_mb lig_mb obj_mb _ <<<"$(probe $MICROBIT_CAPS)"
 if [ -z "${scene_def:-}" ] || [ -z "${scene_mb:-}" ]; then
@@ -806,6 +807,74 @@ want="$(sed -nE 's/^ *ram .*LENGTH = ([0-9]+)K.*/\1/p' linker/microbit.ld) $(mb_
 tr '\n' ' ' <docs/effects.md | tr -s ' ' |
     grep -qF "the micro:bit's $(mb_cap OBJECTS) objects, $(mb_cap MATERIALS) materials and $(mb_cap LIGHTS) lights" && ok ||
     bad "docs/effects.md should give the micro:bit's capacities as mk/boards/microbit.mk does ($MICROBIT_CAPS)"
+
+# Figures the unit tests measure and print: the largest normalize error
+# (test_vec), the cut-off's trials (test_cutoff) and the mirror
+# differences of the symmetric scene (test_stability). The binaries are
+# make test's; built here when missing.
+HOST_BUILD=${HOST_BUILD:-build/posix}
+unit() { # name [args...] -> its output
+    local b=$HOST_BUILD/tests/$1
+    shift
+    [ -x "$b" ] || ${MAKE:-make} -s HOST_BUILD="$HOST_BUILD" \
+        SANITIZE="${SANITIZE:-}" "$b" >/dev/null 2>&1
+    "$b" "$@" 2>&1
+}
+nerr=$(unit test_vec | sed -nE 's/^fx_v3_normalize max error ([0-9.]+) ulp.*/\1/p')
+nq=$(awk -v e="$nerr" 'BEGIN { if (e != "") { c = int(e * 100); if (c < e * 100) c++; printf "%.2f", c / 100 } }')
+for spec in "docs/numerics.md|each component within ([0-9.]+) ulp \(measured\)" \
+    "docs/numerics.md|and each is within ([0-9.]+) ulp of the truth" \
+    "docs/accuracy.md|already within ([0-9.]+) ulp per component in the default"; do
+    md=${spec%%|*} re=${spec#*|}
+    q=$(tr '\n' ' ' <"$md" | tr -s ' ' | sed -nE "s/.*$re.*/\\1/p")
+    check_fig "$md: normalize within (test_vec's largest error $nerr, rounded up)" "$q" "$nq"
+done
+awk -v e="$nerr" 'BEGIN { exit !(e != "" && e <= 0.5 + 1 / 16) }' &&
+    grep -qF '| default | 1 | nearest, ties up (0.5 ulp) | correctly rounded | correctly rounded | within 0.5 + 2^-4 ulp |' docs/accuracy.md && ok ||
+    bad "docs/accuracy.md gives the default normalize as within 0.5 + 2^-4 ulp; test_vec measures $nerr"
+unit test_cutoff >"$tmp/cutoff"
+rtext=$(tr '\n' ' ' <docs/render-model.md | tr -s ' ')
+rm_q() { echo "$rtext" | sed -nE "s/.*$1.*/\\1/p" | tr -d ,; }
+check_fig "docs/render-model.md: the cut-off's traced rays" \
+    "$(rm_q 'tests\/test_cutoff\.c checks the bounds on ([0-9,]+) traced rays')" \
+    "$(sed -nE 's/^colour bounds: ([0-9]+) rays.*/\1/p' "$tmp/cutoff")"
+check_fig "docs/render-model.md: the cut-off's random renders" \
+    "$(rm_q 'the one-level limit on ([0-9,]+) random renders')" \
+    "$(sed -nE 's/^cut-off: [0-9]+ rays cut in ([0-9]+) renders.*/\1/p' "$tmp/cutoff")"
+sym=$(unit test_stability symmetric_scene_mirrors |
+    sed -nE 's/.*mirror differences: core ([0-9]+) of ([0-9]+) pixel pairs \(max ([0-9]+) levels.*/\1 \2 \3/p')
+sq=$(tr '\n' ' ' <docs/stability-cases.md | tr -s ' ' |
+    sed -nE 's/.*at 320x240, ([0-9,]+) of the ([0-9,]+) pixel pairs differ \(the largest difference ([0-9]+) levels\).*/\1 \2 \3/p' | tr -d ,)
+[ -n "$sym" ] && [ "$sq" = "$sym" ] && ok ||
+    bad "docs/stability-cases.md's mirror differences are '$sq'; test_stability prints '$sym' (pairs differing, pairs, largest)"
+# The seed at 16 spp, 640x480, from docs/effects.md's adaptive table (which
+# its own check measures): its RMS error in levels, rounded up.
+ad640=$(sed -nE 's/^\| 640x480 \| 16 spp, every pixel \| [0-9,]+ \| ([0-9.]+) dB \|$/\1/p' docs/effects.md)
+rms=$(awk -v p="$ad640" 'BEGIN { if (p != "") { r = 255 / 10 ^ (p / 20); c = int(r * 10); if (c < r * 10) c++; printf "%.1f", c / 10 } }')
+check_fig "docs/render-model.md: the seed's RMS error at 16 spp (levels, from the adaptive table's $ad640 dB)" \
+    "$(rm_q 'at 16 spp the seed is within ([0-9.]+) levels RMS')" "$rms"
+# docs/numerics.md's square root cost: docs/bench.md's (bench/fxbench).
+sq3=$(awk '/^== cortex-m3/ { m = 1; next } /^== / { m = 0 } m && $1 == "sqrt" { printf "%.0f", $2 }' docs/bench.md)
+check_fig "docs/numerics.md: instructions per sqrt on the M3 (docs/bench.md, rounded)" \
+    "$(tr '\n' ' ' <docs/numerics.md | tr -s ' ' | sed -nE 's/.*rounding is decided on integers\. ([0-9]+) instructions on Cortex-M3.*/\1/p')" "$sq3"
+# Sizes in KB that docs/embedding.md rounds: to the decimals it shows.
+kb() { # bytes decimals -> KB
+    awk -v b="$1" -v d="$2" 'BEGIN { printf "%." d "f", b / 1024 }'
+}
+etext=$(tr '\n' ' ' <docs/embedding.md | tr -s ' ')
+ek=$(echo "$etext" | sed -nE 's/.*the seed scene is ([0-9.]+) KB of text, against ([0-9.]+) KB of `rt_scene`.*/\1 \2/p')
+read -r ek1 ek2 <<<"$ek"
+check_fig "docs/embedding.md: the seed's text in KB" "${ek1:-}" "$(kb "$(wc -c <scenes/seed.scene)" "$(echo "${ek1:-}" | awk -F. '{ print length($2) }')")"
+check_fig "docs/embedding.md: rt_scene in KB" "${ek2:-}" "$(kb "${scene_def:-0}" 0)"
+for f in docs/embedding.md docs/examples/embed_example.c; do
+    check_fig "$f: rt_scene in KB, by default" \
+        "$(sed -nE 's/.*static rt_scene scene; +\/\* ([0-9]+) KB by default.*/\1/p' "$f" | head -n 1)" "$(kb "${scene_def:-0}" 0)"
+done
+for f in docs/embedding.md docs/scene-format.md; do
+    check_fig "$f: the parser's name table by default" \
+        "$(tr '\n' ' ' <"$f" | tr -s ' ' | sed -nE 's/.*\(RT_MAX_NAME \+ 1\)`? bytes \(([0-9,]+) by default\).*/\1/p')" \
+        "$((${mat_def:-0} * (${name_def:-0} + 1)))"
+done
 
 # Every build/posix-*/fixtrace a command block runs is built in that block
 # (build/posix is what `make` builds).
