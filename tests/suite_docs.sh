@@ -694,6 +694,23 @@ seed_size=$(awk '/^image / { print $2 "x" $3 }' scenes/seed.scene)
 grep -qE "^    make run +# renders scenes/seed\.scene at $seed_size to seed\.ppm$" README.md && ok ||
     bad "README.md's make run should render scenes/seed.scene at its own $seed_size"
 
+# README.md's sample scene error: what fixtrace prints for a my.scene
+# whose third line uses the undefined material.
+mkdir -p "$tmp/err-example"
+printf 'camera eye 0 2 -6 look 0 1 0 fov 50\nlight 5 10 -5\nsphere center 0 0 0 radius 1 material steel\n' \
+    >"$tmp/err-example/my.scene"
+ft_abs=$(cd "$(dirname "$FT")" && pwd)/$(basename "$FT")
+(cd "$tmp/err-example" && "$ft_abs" -q -o x.ppm my.scene 2>&1 | sed 's/^/    /') >"$tmp/err-got"
+awk '/^    my\.scene:[0-9]+:[0-9]+: error:/ { on = 1 } on && !/^    / { exit } on' README.md >"$tmp/err-shown"
+[ -s "$tmp/err-shown" ] && cmp -s "$tmp/err-got" "$tmp/err-shown" && ok ||
+    bad "README.md's sample scene error is not what fixtrace prints:" \
+        "$(diff "$tmp/err-shown" "$tmp/err-got" | head -n 6)"
+# port/baremetal/README.md's reserved stack: the boards table's.
+rs=$(tr '\n' ' ' <port/baremetal/README.md | tr -s ' ' |
+    sed -nE 's/.*inside the ([0-9]+) KB \(([0-9]+) KB on the micro:bit\) the linker scripts reserve.*/\1 \2/p')
+[ "$rs" = "$(($(board_fig an385 tables reserved | tr -d ,) / 1024)) $(($(board_fig microbit tables reserved | tr -d ,) / 1024))" ] && ok ||
+    bad "port/baremetal/README.md gives the reserved stack as '$rs' KB (an385, micro:bit); its table says otherwise"
+
 # docs/effects.md's adaptive table, every row and column, measured again.
 if FIXTRACE="$FT" bash tools/adaptive_table.sh --check 2>"$tmp/err"; then
     ok
