@@ -173,6 +173,39 @@ else
     done
 fi
 
+# Defaults the pages give as `RT_NAME` (N), and the configuration table of
+# docs/embedding.md (| `RT_NAME` | N | ...), are core/rt_config.h's.
+cfg_default() { sed -nE "s/^#define $1 ([0-9]+)\$/\\1/p" core/rt_config.h | head -n 1; }
+for md in README.md docs/*.md port/baremetal/README.md; do
+    { tr '\n' ' ' <"$md" | tr -s ' ' | grep -oE '`RT_[A-Z_]+` \([0-9,]+\)' | sed -E 's/`(RT_[A-Z_]+)` \(([0-9,]+)\)/\1 \2/'
+      [ "$md" = docs/embedding.md ] && sed -nE 's/^\| `(RT_[A-Z_]+)` \| ([0-9,]+) \|.*/\1 \2/p' "$md"; } |
+        while read -r name v; do
+            want=$(cfg_default "$name")
+            [ -n "$want" ] || continue
+            [ "$(echo "$v" | tr -d ,)" = "$want" ] && echo ok ||
+                echo "FAILED: $md gives $name as $v, core/rt_config.h's default is $want"
+        done
+done >"$tmp/cfgq"
+grep -v '^ok$' "$tmp/cfgq"
+pass=$((pass + $(grep -c '^ok$' "$tmp/cfgq")))
+fail=$((fail + $(grep -c '^FAILED' "$tmp/cfgq")))
+[ "$(wc -l <"$tmp/cfgq")" -ge 15 ] && ok ||
+    bad "fewer than 15 quoted rt_config.h defaults found in the docs"
+# docs/embedding.md: "GCC ... for Cortex-M and x86-64, which agree".
+if command -v arm-none-eabi-gcc >/dev/null 2>&1; then
+    printf '#include "rt_scene.h"\nchar probe_m0[sizeof(rt_scene)];\n' >"$tmp/sz_m0.c"
+    # shellcheck disable=SC2086
+    arm-none-eabi-gcc -std=c99 -mcpu=cortex-m0 -mthumb -Icore $MICROBIT_CAPS \
+        -c "$tmp/sz_m0.c" -o "$tmp/sz_m0.o" 2>"$tmp/err" &&
+        arm-none-eabi-gcc -std=c99 -mcpu=cortex-m0 -mthumb -Icore \
+            -c "$tmp/sz_m0.c" -o "$tmp/sz_def.o" 2>>"$tmp/err"
+    m0_mb=$(arm-none-eabi-nm -S "$tmp/sz_m0.o" 2>/dev/null | awk '$4 == "probe_m0" { print $2 }')
+    m0_def=$(arm-none-eabi-nm -S "$tmp/sz_def.o" 2>/dev/null | awk '$4 == "probe_m0" { print $2 }')
+    [ -n "$m0_mb" ] && [ $((16#$m0_mb)) = "${scene_mb:-}" ] &&
+        [ -n "$m0_def" ] && [ $((16#$m0_def)) = "${scene_def:-}" ] && ok ||
+        bad "sizeof(rt_scene) on a Cortex-M0 (${m0_def:-?}, ${m0_mb:-?} hex) is not the host's ($scene_def, $scene_mb), as docs/embedding.md says"
+fi
+
 # --- embed_example.c runs on the host ----------------------------------------
 # A fake display: records the commands and their argument bytes, and
 # expands the RGB565 pixel stream after RAMWR to a PPM the way fixtrace
