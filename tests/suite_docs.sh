@@ -37,6 +37,10 @@ trap 'rm -rf "$tmp"' EXIT
 
 ok() { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAILED: $*"; }
+numword() { # "eight" -> 8 (zero to twelve)
+    echo " zero one two three four five six seven eight nine ten eleven twelve " |
+        awk -v w="$1" '{ for (i = 1; i <= NF; i++) if ($i == w) print i - 1 }'
+}
 counts() { # scene -> "objects materials lights" as --emit-c gives them
     "$FT" --emit-c "$1" | awk '/^#define FW_SCENE_OBJECTS / { o = $3 }
         /^#define FW_SCENE_MATERIALS / { m = $3 } /^#define FW_SCENE_LIGHTS / { l = $3 }
@@ -718,9 +722,8 @@ read -r many_o _ <<<"$(counts scenes/many.scene)"
 many_q=$(echo "$rtext" | sed -nE 's/.*`many`: ([0-9]+) shapes on a floor.*/\1/p')
 check_fig "README.md: many's shapes besides the floor" "$many_q" "$((many_o - 1))"
 read -r seed_o _ <<<"$(counts scenes/seed.scene)"
-words="zero one two three four five six seven eight nine ten eleven twelve"
 seed_q=$(echo "$rtext" | sed -nE 's/.*`seed`: every effect in ([a-z]+) objects.*/\1/p')
-check_fig "README.md: the seed's objects" "$(echo " $words " | awk -v w="$seed_q" '{ for (i = 1; i <= NF; i++) if ($i == w) print i - 1 }')" "$seed_o"
+check_fig "README.md: the seed's objects" "$(numword "$seed_q")" "$seed_o"
 mir_d=$(awk '/^image /{for (i = 1; i < NF; i++) if ($i == "depth") print $(i + 1)}' scenes/mirrors.scene)
 check_fig "README.md: mirrors' depth" "$(echo "$rtext" | sed -nE 's/.*`mirrors`: two facing mirrors, depth ([0-9]+).*/\1/p')" "$mir_d"
 seed_size=$(awk '/^image / { print $2 "x" $3 }' scenes/seed.scene)
@@ -925,6 +928,19 @@ for f in docs/embedding.md docs/scene-format.md; do
         "$(tr '\n' ' ' <"$f" | tr -s ' ' | sed -nE 's/.*\(RT_MAX_NAME \+ 1\)`? bytes \(([0-9,]+) by default\).*/\1/p')" \
         "$((${mat_def:-0} * (${name_def:-0} + 1)))"
 done
+
+# docs/render-model.md's POV-Ray check: how many scenes tests/suite_povray.sh
+# renders, and which may keep a speckle.
+pov=$(awk '/^# scene +PSNR floor/ { on = 1; next } on && /^(scenes|tests)\// { print }' tests/suite_povray.sh)
+npov=$(echo "$pov" | grep -c .)
+pq_n=$(tr '\n' ' ' <docs/render-model.md | tr -s ' ' |
+    sed -nE 's/.*`tests\/suite_povray\.sh` renders ([a-z]+) scenes with POV-Ray.*/\1/p')
+check_fig "docs/render-model.md: the scenes suite_povray renders" \
+    "$(numword "$pq_n")" "$npov"
+spk=$(echo "$pov" | awk '$3 > 0 { printf "%s %s;", $1, $3 }')
+[ "$spk" = "tests/pov/glass_spheres.scene 1;" ] &&
+    tr '\n' ' ' <docs/render-model.md | tr -s ' ' | grep -qF 'with no speckle (one allowed in the glass scene)' && ok ||
+    bad "docs/render-model.md allows one speckle in the glass scene; tests/suite_povray.sh allows '$spk'"
 
 # Every build/posix-*/fixtrace a command block runs is built in that block
 # (build/posix is what `make` builds).
