@@ -8,7 +8,7 @@
 # header, writes the page and the chart from them again (in a temporary
 # directory) and exits 1 if either differs from the committed one: every
 # figure the text derives (ratios, savings, targets met, the frontier, the
-# chart) must follow the table (tests/suite_docs.sh runs it).
+# chart) must follow the table (tests/suite_figures.sh runs it).
 # Plain awk: no plotting package.
 set -euo pipefail
 cd "$(dirname "$0")/.."

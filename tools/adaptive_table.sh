@@ -8,7 +8,7 @@
 #   tools/adaptive_table.sh           print the table
 #   tools/adaptive_table.sh --write   put it into docs/effects.md
 #   tools/adaptive_table.sh --check   exit 1 if docs/effects.md's table
-#                                     differs (tests/suite_docs.sh)
+#                                     differs (tests/suite_figures.sh)
 set -eu
 cd "$(dirname "$0")/.."
 FT=${FIXTRACE:-build/posix/fixtrace}

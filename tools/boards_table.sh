@@ -11,7 +11,7 @@
 #   tools/boards_table.sh --write   put it into port/baremetal/README.md
 #
 # Every firmware image must equal the host's, or nothing is written.
-# tests/suite_docs.sh checks what it can without QEMU: the quotes of this
+# tests/suite_figures.sh checks what it can without QEMU: the quotes of this
 # table in the other pages, and the sizes that follow from the scene and
 # the headers.
 set -eu

@@ -12,7 +12,7 @@
 #   tools/pruning_table.sh --check   no QEMU: read the measured cells back
 #                                    from the page, write the section again
 #                                    from them and the boards table, exit 1
-#                                    if it differs (tests/suite_docs.sh)
+#                                    if it differs (tests/suite_figures.sh)
 set -eu
 cd "$(dirname "$0")/.."
 MAKE=${MAKE:-make}
