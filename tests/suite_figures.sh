@@ -348,6 +348,47 @@ m0c=$(echo "$m0" | sed -E ':a; s/^([0-9]+)([0-9]{3})/\1,\2/; ta')
 grep -q "against $m3c per pixel" docs/accuracy.md && grep -q "against $m0c)" docs/accuracy.md && ok ||
     bad "docs/accuracy.md should compare fast with the default's $m3c (M3) and $m0c (M0)"
 
+# docs/bench.md's derived figures follow its measured ones, as
+# tools/bench.sh computes them: the ratios of the float builds, the host
+# ratios and every target row (measured value and met).
+awk -F'|' '
+    function c(i,   v) { v = $i; gsub(/^ +| +$/, "", v); return v }
+    function want(what, got, ex) {
+        if (got == ex) print "ok"
+        else printf "FAILED: docs/bench.md: %s reads '\''%s'\'', its figures give '\''%s'\''\n", what, got, ex }
+    /^== cortex-m3/ { m3 = 1; next } /^== / { m3 = 0 }
+    m3 && $0 ~ /^sqrt / { split($0, w, " "); sqrt3 = w[2] }
+    c(2) == "fixed point, Cortex-M3" { fx = c(3) }
+    c(2) ~ /^reference, / { ref[c(2)] = c(3); rat[c(2)] = c(4) }
+    c(2) == "fixed point" { tf = c(3) } c(2) == "double reference" { tr = c(3) }
+    c(2) == "fixed / reference" { fr = c(3) }
+    c(2) == "-j 1" { j1 = c(3) } c(2) == "-j 2" { j2 = c(3) }
+    c(2) == "speed-up of -j 2" { su = c(3) }
+    c(2) ~ /^seed <= 1,000/ { t1 = c(3) "|" c(4) }
+    c(2) ~ /^correctly rounded sqrt/ { t2 = c(3) "|" c(4) }
+    c(2) ~ /^>= 10x fewer/ { t3 = c(3) "|" c(4) }
+    c(2) ~ /^<= 1.2x the float32/ { t4 = c(3) "|" c(4) }
+    c(2) ~ /^host: fixed <= 1.5x/ { t5 = c(3) "|" c(4) }
+    c(2) ~ /^-j 2 scales/ { t6 = c(3) "|" c(4) }
+    END {
+        for (k in ref) want(k " ratio", rat[k], sprintf("%.3f", fx / ref[k]))
+        want("fixed / reference", fr, sprintf("%.2f", tf / tr))
+        sub(/ \(.*/, "", su); want("speed-up of -j 2", su, sprintf("%.2fx", j1 / j2))
+        want("target: seed", t1, fx "|" (fx <= 1000 ? "yes" : "no"))
+        want("target: sqrt", t2, sqrt3 "|" (sqrt3 <= 50 ? "yes" : "no"))
+        r = ref["reference, soft double, Cortex-M3"] / fx
+        want("target: soft double", t3, sprintf("%.1fx", r) "|" (r >= 10 ? "yes" : "no"))
+        r = fx / ref["reference, float32 on the FPU, Cortex-M4F"]
+        want("target: M4F", t4, sprintf("%.2fx", r) "|" (r <= 1.2 ? "yes" : "no"))
+        r = tf / tr
+        want("target: host", t5, sprintf("%.2fx (noisy)", r) "|" (r <= 1.5 ? "yes" : "no"))
+        r = j1 / j2
+        want("target: -j 2", t6, sprintf("%.2fx (noisy)", r) "|" (r >= 1.8 ? "yes" : "no"))
+    }' docs/bench.md >"$tmp/benchq"
+grep -v '^ok$' "$tmp/benchq"
+pass=$((pass + $(grep -c '^ok$' "$tmp/benchq")))
+fail=$((fail + $(grep -c '^FAILED' "$tmp/benchq")))
+
 # docs/effects.md's pruning section (tools/pruning_table.sh --check): its
 # seed rows are the boards table's an385 and m0 rows, and its per-pixel
 # figures, percentages, ratios, targets met and notes follow its measured
