@@ -199,6 +199,39 @@ else
     [ "$(grep -c '^ok$' "$tmp/stackq")" -ge 10 ] && ok ||
         bad "fewer than 10 quoted stack figures found in the docs"
 fi
+# docs/stack.md's tables and example are its data block, and the fit
+# follows the depth columns the way tools/stack_table.sh computes it.
+echo "$data" | awk '
+    function num(x) { gsub(/[ ,]/, "", x); return x }
+    function want(what, got, ex) {
+        if (got == ex) print "ok"
+        else printf "FAILED: docs/stack.md: %s reads '\''%s'\'', its data block gives '\''%s'\''\n", what, got, ex }
+    FNR == NR { if ($1 == "example") ex[$3] = $4; else v[$2 " " $3] = $4; next }
+    /^\| scene \(depth\) \|/ { n = split($0, hd, "|"); for (i = 3; i < n; i++) { b = hd[i]; gsub(/ /, "", b); col[i] = b }; sc = 1; next }
+    /^## Per level of depth/ { sc = 0 }
+    sc && /^\| [a-z]+ \([0-9]+\) \|/ { n = split($0, c, "|"); s = c[2]; sub(/^ /, "", s); sub(/ \(.*/, "", s)
+        for (i = 3; i < n; i++) { x = num(c[i]); if (x == "overitscapacities") x = "-"
+            want(s " on " col[i], x, v[col[i] " " s]) } }
+    /^\| [a-z0-9]+ \| [0-9,]+ \| [0-9,]+ \|/ && !/^\| board / { n = split($0, c, "|"); b = c[2]; gsub(/ /, "", b)
+        cnt = 0; sx = sy = sxx = sxy = 0
+        for (d = 0; d <= 5; d++) { x = num(c[d + 3]); want(b " depth " d, x, v[b " seed_d" d]); y[d] = x }
+        for (d = 1; d <= 5; d++) { cnt++; sx += d; sy += y[d]; sxx += d * d; sxy += d * y[d] }
+        k = (cnt * sxy - sx * sy) / (cnt * sxx - sx * sx); q = (sy - k * sx) / cnt
+        base = int(q + 0.5); per = int(k + 0.5); worst = 0
+        for (d = 1; d <= 5; d++) { e = y[d] - (base + per * d); if (e < 0) e = -e; if (e > worst) worst = e }
+        want(b " base", num(c[9]), base); want(b " per level", num(c[10]), per)
+        want(b " worst misfit", num(c[11]), worst)
+        want(b " fit_base (data)", base, v[b " fit_base"]); want(b " fit_per_level (data)", per, v[b " fit_per_level"]) }
+    /^## The README.s example/ { exs = 1 } /^## Data/ { exs = 0 }
+    exs && /^    [a-z_]+ [0-9.]+$/ { want("example " $1, $2, ex[$1]); nex++ }
+    END { want("example lines", nex + 0, 5) }
+' - docs/stack.md >"$tmp/stackt"
+grep -v '^ok$' "$tmp/stackt"
+pass=$((pass + $(grep -c '^ok$' "$tmp/stackt")))
+fail=$((fail + $(grep -c '^FAILED' "$tmp/stackt")))
+[ "$(wc -l <"$tmp/stackt")" -ge 80 ] && ok ||
+    bad "docs/stack.md: fewer than 80 table figures found"
+
 if bash tools/frame_time.sh --check 2>"$tmp/err"; then
     ok
 else
