@@ -272,6 +272,17 @@ check_fig() { # what, quoted, measured
     fi
 }
 
+# The boards table's per-pixel column is its instructions over 320x240.
+awk -F'|' '$3 ~ /^ (tables|text) $/ {
+        i = $4; gsub(/[ ,]/, "", i); p = $5; gsub(/ /, "", p); b = $2 $3; gsub(/ +/, " ", b); sub(/ $/, "", b)
+        if (sprintf("%.1f", i / 76800) == p) print "ok"
+        else printf "FAILED: port/baremetal/README.md:%s per pixel reads %s, its instructions give %.1f\n", b, p, i / 76800 }' \
+    port/baremetal/README.md >"$tmp/ippq"
+grep -v '^ok$' "$tmp/ippq"
+pass=$((pass + $(grep -c '^ok$' "$tmp/ippq")))
+fail=$((fail + $(grep -c '^FAILED' "$tmp/ippq")))
+[ "$(wc -l <"$tmp/ippq")" -ge 12 ] && ok || bad "port/baremetal/README.md: fewer than 12 rows in the boards table"
+
 # port/baremetal/README.md: its sample `make qemu` output is the an385
 # tables row, and the sizes the boards section quotes follow from the
 # scene, the headers, the board files and the table itself.
