@@ -12,17 +12,12 @@
 #   from the parser's own error messages) has an example there;
 # - port/baremetal/board_template.c, switched on, compiles for Cortex-M0,
 #   M3 and RV32 (docs/porting.md);
-# - every stack figure the docs quote is docs/stack.md's (make stack), and
-#   README.md's time per frame follows the measured instructions/pixel;
 # - README.md shows the gallery picture of every scene in scenes/ (a
 #   picture that differs from a fresh render is only noted), and every
 #   relative link in README.md and docs/*.md points at a file;
-# - every measured figure the docs quote matches the tool that measures
-#   it (the accuracy table, the adaptive ray counts and --build-flags are
-#   measured again here) or the table that tool wrote (the QEMU figures of
-#   port/baremetal/README.md and docs/bench.md, quoted in README.md,
-#   docs/effects.md, docs/embedding.md and docs/accuracy.md); and every
-#   build/posix-*/fixtrace a command block runs is built in that block.
+# - every build/posix-*/fixtrace a command block runs is built in that
+#   block.
+# The figures the pages quote are tests/suite_figures.sh's.
 set -u
 cd "$(dirname "$0")/.."
 FT=${FIXTRACE:-build/posix/fixtrace}
@@ -33,7 +28,6 @@ trap 'rm -rf "$tmp"' EXIT
 
 ok() { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAILED: $*"; }
-
 if [ ! -x "$FT" ]; then
     echo "FAILED: $FT not found (build it with make)"
     echo "0 passed, 1 failed"
@@ -103,32 +97,6 @@ else
     bad "docs/embedding.md's copy of embed_example.c differs from the file:"
     diff docs/examples/embed_example.c "$tmp/quoted.c" | head -n 20
 fi
-
-# docs/embedding.md states sizeof(rt_scene) for the default capacities and
-# the micro:bit build's (mk/firmware.mk); both must match the headers.
-cat >"$tmp/size.c" <<'EOF'
-#include <stdio.h>
-#include "rt_scene.h"
-int main(void) { printf("%u\n", (unsigned)sizeof(rt_scene)); return 0; }
-EOF
-MICROBIT_CAPS="-DRT_MAX_OBJECTS=16 -DRT_MAX_MATERIALS=12 -DRT_MAX_LIGHTS=2
-    -DRT_MAX_NAME=15"
-for caps in "" "$MICROBIT_CAPS"; do
-    # shellcheck disable=SC2086
-    if $CC -std=c99 -Icore $caps "$tmp/size.c" -o "$tmp/size" 2>"$tmp/err"; then
-        n=$("$tmp/size")
-        # As the page writes it: 19,632.
-        nc=$(echo "$n" | sed -E ':a; s/^([0-9]+)([0-9]{3})/\1,\2/; ta')
-        if grep -q "| $nc bytes |" docs/embedding.md; then
-            ok
-        else
-            bad "docs/embedding.md does not give sizeof(rt_scene) = $nc" \
-                "bytes (capacities: ${caps:-default}); update its table"
-        fi
-    else
-        bad "cannot compile a sizeof(rt_scene) probe: $(head -c 300 "$tmp/err")"
-    fi
-done
 
 # --- embed_example.c runs on the host ----------------------------------------
 # A fake display: records the commands and their argument bytes, and
@@ -336,66 +304,6 @@ for v in on off; do
         bad "docs/scene-format.md has no example of 'shadows $v'"
 done
 
-# --- Measured figures: docs/stack.md and the frame-time table ---------------
-# Every stack figure the docs quote (marked N<!-- stack BOARD KEY -->, the
-# stack columns of the boards tables, README.md's example output) is the
-# one in docs/stack.md's data block, which `make stack` measures; the data
-# covers every scene and board; README.md's frame-time table follows the
-# measured instructions per pixel (tools/frame_time.sh --check).
-data=$(sed -n '/^```$/,/^```$/p' docs/stack.md 2>/dev/null |
-    grep -E '^(stack|fit|example) ')
-if [ -z "$data" ]; then
-    bad "docs/stack.md has no data block (run make stack)"
-else
-    ok
-    for b in $(cd mk/boards && ls *.mk | sed 's/\.mk$//'); do
-        for sc in scenes/*.scene; do
-            echo "$data" | grep -q "^stack $b $(basename "$sc" .scene) " && ok ||
-                bad "docs/stack.md has no figure for $sc on $b (run make stack)"
-        done
-    done
-    for f in README.md docs/*.md port/baremetal/README.md linker/template.ld; do
-        echo "$data" | awk -v f="$f" '
-            FNR == NR { if ($1 == "example") ex[$3] = $4; else v[$2 " " $3] = $4
-                        if ($1 == "stack" && $3 == "seed") seed[$2] = $4; next }
-            function num(x) { gsub(/[ ,]/, "", x); return x }
-            function check(what, got, want) {
-                if (want == "") printf "FAILED: %s:%d: %s has no figure in docs/stack.md\n", f, FNR, what
-                else if (got != want) printf "FAILED: %s:%d: %s is %s, docs/stack.md says %s (run make stack)\n", f, FNR, what, got, want
-                else print "ok" }
-            { line = $0
-              n = gsub(/<!-- stack /, "&", line)
-              k = gsub(/[0-9]<!-- stack /, "&", line)
-              if (n > k) printf "FAILED: %s:%d: a stack quote without a number (run make stack)\n", f, FNR
-              while (match(line, /[0-9][0-9,]*<!-- stack [^ ]+ [^ ]+ -->/)) {
-                  m = substr(line, RSTART, RLENGTH); split(m, p, "<!-- stack ")
-                  split(p[2], q, " "); check(q[1] " " q[2], num(p[1]), v[q[1] " " q[2]])
-                  line = substr(line, RSTART + RLENGTH) } }
-            # The stack column of the seed tables (README.md: board, ipp,
-            # flash, RAM, stack; port/baremetal/README.md: the tables rows).
-            f == "README.md" && /^\| [a-z0-9]+ \(/ && NF >= 7 {
-                split($0, c, "|"); split(c[2], bn, " "); check(bn[1] " seed stack", num(c[6]), seed[bn[1]]) }
-            f == "port/baremetal/README.md" && /^\| [a-z0-9]+ \| tables \|/ {
-                split($0, c, "|"); b = c[2]; gsub(/ /, "", b); check(b " seed stack", num(c[6]), seed[b]) }
-            f == "README.md" && /^    make qemu BOARD=an385 SCENE=myscene.scene/ { inex = 1; next }
-            f == "README.md" && inex && /^    wrote / { inex = 0 }
-            f == "README.md" && inex && /^    [a-z_]+ [0-9.]+$/ { check("example " $1, $2, ex[$1]) }
-            ' - "$f"
-    done >"$tmp/stackq"
-    grep -v '^ok$' "$tmp/stackq"
-    pass=$((pass + $(grep -c '^ok$' "$tmp/stackq")))
-    fail=$((fail + $(grep -c '^FAILED' "$tmp/stackq")))
-    [ "$(grep -c '^ok$' "$tmp/stackq")" -ge 10 ] && ok ||
-        bad "fewer than 10 quoted stack figures found in the docs"
-fi
-if bash tools/frame_time.sh --check 2>"$tmp/err"; then
-    ok
-else
-    bad "README.md's frame-time table does not follow the measured" \
-        "instructions per pixel (run tools/frame_time.sh --write):" \
-        "$(head -c 400 "$tmp/err")"
-fi
-
 # --- README gallery and links ------------------------------------------------
 for scene in scenes/*.scene; do
     name=$(basename "$scene" .scene)
@@ -438,142 +346,6 @@ done >"$tmp/links"
 grep -v '^ok$' "$tmp/links"
 pass=$((pass + $(grep -c '^ok$' "$tmp/links")))
 fail=$((fail + $(grep -c '^FAILED' "$tmp/links")))
-
-# --- Measured figures ----------------------------------------------------------
-# Every figure the docs quote from a measurement is either printed by the
-# tool that measures it (run here when it is quick) or checked against the
-# table that tool wrote. The slow tools (QEMU) write the board tables of
-# port/baremetal/README.md and docs/bench.md; every other page's copy of
-# those figures is checked against them, so regenerating a table without
-# the pages that quote it fails here, naming the page.
-nocomma() { echo "$1" | tr -d ','; }
-same_num() { # a b: equal as numbers (commas ignored)
-    awk -v a="$(nocomma "$1")" -v b="$(nocomma "$2")" 'BEGIN { exit !(a + 0 == b + 0 && a != "") }'
-}
-# board_fig BOARD MODE FIELD: from the table tools/boards_table.sh writes
-# (fields: instructions, ipp, stack, flash, ram).
-board_fig() {
-    awk -F'|' -v b="$1" -v m="$2" -v f="$3" '
-        { gsub(/ /, "", $2); gsub(/ /, "", $3) }
-        $2 == b && $3 == m {
-            i = 8; if (f == "instructions") i = 4; if (f == "ipp") i = 5
-            if (f == "stack") i = 6; if (f == "flash") i = 7
-            v = $i; gsub(/ /, "", v); print v; exit }' port/baremetal/README.md
-}
-check_fig() { # what, quoted, measured
-    if [ -z "$3" ]; then
-        bad "$1: no measured figure to check against"
-    elif same_num "$2" "$3"; then
-        ok
-    else
-        bad "$1 says '$2', the measurement says '$3'"
-    fi
-}
-
-# README's board table: each row against its board's tables row.
-boards=$(cd mk/boards && ls *.mk | sed 's/\.mk$//')
-for b in $boards; do
-    row=$(grep -E "^\| $b \(" README.md | head -n 1)
-    if [ -z "$row" ]; then
-        bad "README.md's board table has no row for $b"
-        continue
-    fi
-    IFS='|' read -r _ _ ipp flash ram stack _ <<<"$row"
-    check_fig "README.md $b instructions/pixel" "$ipp" "$(board_fig "$b" tables ipp)"
-    check_fig "README.md $b flash" "$flash" "$(board_fig "$b" tables flash)"
-    check_fig "README.md $b RAM" "$ram" "$(board_fig "$b" tables ram)"
-    check_fig "README.md $b stack" "$stack" "$(board_fig "$b" tables stack)"
-done
-m3=$(board_fig an385 tables ipp)
-m0=$(board_fig m0 tables ipp)
-ratio=$(awk -v v="$(nocomma "$m3")" 'BEGIN { printf "%.1f", v / 1000 }')
-if awk -v v="$(nocomma "$m3")" 'BEGIN { exit !(v > 1000) }'; then
-    grep -q "seed scene is still ${ratio}x over the 1,000" README.md && ok ||
-        bad "README.md should say the seed is ${ratio}x over the 1,000 instructions/pixel ($m3)"
-fi
-# The README's sample `make qemu` output is consistent in itself.
-awk '/^    instructions [0-9]+$/ {i = $2} /^    pixels [0-9]+$/ {p = $2}
-     /^    instructions_per_pixel / {q = $2}
-     END { exit !(p > 0 && sprintf("%.1f", i / p) == q) }' README.md && ok ||
-    bad "README.md's sample make qemu output: instructions / pixels is not its instructions_per_pixel"
-
-# docs/bench.md (tools/bench.sh) measures the seed on the M3 and M0 again.
-bench_seed=$(grep -E '^\| seed \|' docs/bench.md | head -n 1)
-IFS='|' read -r _ _ b3 b0 _ <<<"$bench_seed"
-check_fig "docs/bench.md seed an385" "$b3" "$m3"
-check_fig "docs/bench.md seed m0" "$b0" "$m0"
-fx=$(sed -nE 's/^\| fixed point, Cortex-M3 \| ([0-9.,]+) .*/\1/p' docs/bench.md)
-check_fig "docs/bench.md fixed point, Cortex-M3" "$fx" "$m3"
-t1=$(sed -nE 's/^\| seed <= 1,000 instructions\/pixel on the M3 \| ([0-9.,]+) .*/\1/p' docs/bench.md)
-check_fig "docs/bench.md targets: seed" "$t1" "$m3"
-sd=$(sed -nE 's/^\| reference, soft double, Cortex-M3 \| ([0-9.]+) .*/\1/p' docs/bench.md)
-m4f=$(sed -nE 's/^\| reference, float32 on the FPU, Cortex-M4F \| ([0-9.]+) .*/\1/p' docs/bench.md)
-x_sd=$(awk -v a="$sd" -v b="$(nocomma "$m3")" 'BEGIN { if (b > 0) printf "%.1f", a / b }')
-grep -qE "^\| >= 10x fewer instructions than soft double \(M3\) \| ${x_sd}x " docs/bench.md && ok ||
-    bad "docs/bench.md targets: soft double / fixed should read ${x_sd}x"
-grep -q "soft-double reference: \*\*[a-z]*\*\*: ${x_sd}x (default)" docs/accuracy.md && ok ||
-    bad "docs/accuracy.md should give the soft-double ratio ${x_sd}x (docs/bench.md)"
-x_m4=$(awk -v a="$m4f" -v b="$(nocomma "$m3")" 'BEGIN { if (b > 0) printf "%.2f", a / b }')
-m4c=$(echo "$m4f" | sed -E ':a; s/^([0-9]+)([0-9]{3})/\1,\2/; ta')
-grep -q "$m4c instructions per" docs/accuracy.md && grep -q "pixel, ${x_m4}x the fixed-point default" docs/accuracy.md && ok ||
-    bad "docs/accuracy.md should give the M4F float32 cost $m4c, ${x_m4}x (docs/bench.md)"
-m3c=$(echo "$m3" | sed -E ':a; s/^([0-9]+)([0-9]{3})/\1,\2/; ta')
-m0c=$(echo "$m0" | sed -E ':a; s/^([0-9]+)([0-9]{3})/\1,\2/; ta')
-grep -q "against $m3c per pixel" docs/accuracy.md && grep -q "against $m0c)" docs/accuracy.md && ok ||
-    bad "docs/accuracy.md should compare fast with the default's $m3c (M3) and $m0c (M0)"
-
-# docs/effects.md's pruning table: the seed rows are the board table's
-# an385 and m0 rows; the pruned diffuse cost is docs/bench.md's.
-eff_row() { grep -E "^\| $1 \| $2 \| $3[ ,]" docs/effects.md | head -n 1; }
-for spec in "an385 M3 tables pruned" "an385 M3 text full" "m0 M0 tables pruned" "m0 M0 text full"; do
-    set -- $spec
-    IFS='|' read -r _ _ _ _ flash ins ipp _ <<<"$(eff_row seed "$2 \([a-z0-9]*\)" "$4")"
-    check_fig "docs/effects.md seed $2 $4 flash" "${flash%% (*}" "$(board_fig "$1" "$3" flash)"
-    check_fig "docs/effects.md seed $2 $4 instructions" "$ins" "$(board_fig "$1" "$3" instructions)"
-    check_fig "docs/effects.md seed $2 $4 per pixel" "$ipp" "$(board_fig "$1" "$3" ipp)"
-done
-bench_diff=$(grep -E '^\| diffuse \|' docs/bench.md | head -n 1)
-IFS='|' read -r _ _ d3 d0 _ <<<"$bench_diff"
-IFS='|' read -r _ _ _ _ _ _ e3 _ <<<"$(eff_row diffuse 'M3 \(an385\)' pruned)"
-IFS='|' read -r _ _ _ _ _ _ e0 _ <<<"$(eff_row diffuse 'M0 \(m0\)' pruned)"
-check_fig "docs/effects.md diffuse M3 pruned per pixel" "$e3" "$d3"
-check_fig "docs/effects.md diffuse M0 pruned per pixel" "$e0" "$d0"
-
-# docs/embedding.md quotes its stack figures from docs/stack.md, which
-# the stack quotes' own check below holds to it.
-
-# README's accuracy table: printed again by the tool that made it.
-if FIXTRACE="$FT" bash tools/reference_table.sh >"$tmp/acc" 2>"$tmp/err"; then
-    tail -n +3 "$tmp/acc" | while IFS= read -r line; do
-        grep -qxF -- "$line" README.md && echo ok ||
-            echo "FAILED: README.md's accuracy table lacks '$line' (tools/reference_table.sh)"
-    done >"$tmp/accres"
-    grep -v '^ok$' "$tmp/accres"
-    pass=$((pass + $(grep -c '^ok$' "$tmp/accres")))
-    fail=$((fail + $(grep -c '^FAILED' "$tmp/accres")))
-else
-    bad "tools/reference_table.sh failed: $(head -c 300 "$tmp/err")"
-fi
-
-# docs/effects.md's adaptive table: its 320x240 ray counts, measured.
-if FIXTRACE="$FT" bash tools/adaptive_table.sh --rays >"$tmp/ad" 2>"$tmp/err"; then
-    while IFS= read -r line; do
-        grep -qF -- "$line" docs/effects.md && ok ||
-            bad "docs/effects.md's adaptive table lacks '$line' (tools/adaptive_table.sh)"
-    done <"$tmp/ad"
-else
-    bad "tools/adaptive_table.sh --rays failed: $(head -c 300 "$tmp/err")"
-fi
-
-# docs/effects.md's --build-flags examples, as the tool prints them.
-awk '/^    \$ build\/posix\/fixtrace --build-flags / { s = $NF; getline; print s "|" $0 }' \
-    docs/effects.md >"$tmp/bf"
-[ -s "$tmp/bf" ] && ok || bad "docs/effects.md shows no --build-flags example"
-while IFS='|' read -r scene want; do
-    got=$("$FT" --build-flags "$scene" 2>/dev/null)
-    [ "$got" = "$(echo "$want" | sed 's/^ *//')" ] && ok ||
-        bad "docs/effects.md: --build-flags $scene prints '$got', the page shows '$want'"
-done <"$tmp/bf"
 
 # Every build/posix-*/fixtrace a command block runs is built in that block
 # (build/posix is what `make` builds).

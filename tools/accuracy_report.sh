@@ -1,19 +1,32 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # accuracy_report.sh: writes docs/accuracy.md, docs/accuracy.svg and
-# docs/accuracy-work.svg from the measurements tools/accuracy.sh collected
-# (build/accuracy/results.tsv).
-#   tools/accuracy_report.sh RESULTS.tsv M4F_SAME WIDTH HEIGHT RUNS SECONDS
+# docs/accuracy-work.svg from the measurements tools/accuracy.sh collected,
+# which it keeps in docs/accuracy-data.tsv.
+#   tools/accuracy_report.sh            write the three from the data
+#   tools/accuracy_report.sh --check    exit 1 unless they follow from it
 # Plain awk: no plotting package.
 #
-# Columns of RESULTS.tsv: label (unit bits, or "reference, ...") scene spp
-# depth m3 m0 m4f host psnr maxerr bad fw=host adaptive psnr-vs-ideal.
+# The data's first line is "# m4f_same width height runs seconds"; then
+# one row per measurement, tab-separated: label (unit bits, or
+# "reference, ...") scene spp depth m3 m0 m4f host psnr maxerr bad
+# fw=host adaptive psnr-vs-ideal.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-TSV=$1 M4SAME=$2 W=$3 H=$4 RUNS=$5 SECS=$6
-MD=docs/accuracy.md
-SVG=docs/accuracy.svg
-SVG2=docs/accuracy-work.svg
+DATA=docs/accuracy-data.tsv
+OUTDIR=docs
+CHECK=0
+if [ "${1:-}" = --check ]; then
+    CHECK=1
+    OUTDIR=$(mktemp -d)
+    trap 'rm -rf "$OUTDIR"' EXIT
+fi
+TSV=$OUTDIR/accuracy-rows.tsv
+grep -v '^#' "$DATA" >"$TSV"
+read -r _ M4SAME W H RUNS SECS < <(head -n 1 "$DATA")
+MD=$OUTDIR/accuracy.md
+SVG=$OUTDIR/accuracy.svg
+SVG2=$OUTDIR/accuracy-work.svg
 DEF=30
 
 # ---- Figures the text quotes ---------------------------------------------------
@@ -341,3 +354,17 @@ m0-f32, m4f-f32 (mk/accuracy.mk). \`tests/suite_accuracy.sh\` repeats a
 small version of this (seed at 48x36) in \`make test\`.
 EOF
 } >"$MD"
+rm -f "$TSV"
+
+if [ "$CHECK" = 1 ]; then
+    st=0
+    for f in accuracy.md accuracy.svg accuracy-work.svg; do
+        if ! cmp -s "$OUTDIR/$f" "docs/$f"; then
+            echo "docs/$f does not follow docs/accuracy-data.tsv" \
+                "(run make accuracy):" >&2
+            diff "docs/$f" "$OUTDIR/$f" | head -n 10 >&2
+            st=1
+        fi
+    done
+    exit $st
+fi

@@ -9,7 +9,7 @@
 #   tools/frame_time.sh           print the section
 #   tools/frame_time.sh --write   put it into README.md
 #   tools/frame_time.sh --check   exit 1 if README.md's section differs
-#                                 (tests/suite_docs.sh)
+#                                 (tests/suite_figures.sh)
 set -eu
 cd "$(dirname "$0")/.."
 SRC=port/baremetal/README.md

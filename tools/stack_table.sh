@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 # make stack: the painted stack high-water mark of the firmware, measured
 # under QEMU, written to docs/stack.md, and quoted from there into the
-# docs (tests/suite_docs.sh checks every quote against the file):
+# docs (tests/suite_figures.sh checks every quote against the file):
 #
 # - every scene in scenes/ on every board in mk/boards/, built for the
 #   scene (PRUNE=1, the default) at 320x240, 1 spp: the figure `make qemu`
@@ -149,7 +149,7 @@ echo
 echo "## Data"
 echo
 echo "The figures above as \`kind board key value\` lines, which"
-echo "tests/suite_docs.sh reads to check the quotes in the other pages."
+echo "tests/suite_figures.sh reads to check the quotes in the other pages."
 echo
 echo '```'
 for b in $BOARDS; do
