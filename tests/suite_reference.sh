@@ -32,7 +32,7 @@ for scene in scenes/*.scene; do
 done
 "$FT" -q -W 320 -H 240 -o "$tmp/f.ppm" scenes/seed.scene
 "$FT" -q --reference -W 320 -H 240 -o "$tmp/r.ppm" scenes/seed.scene
-if "$FT" compare "$tmp/f.ppm" "$tmp/r.ppm" --min-psnr 45 --max-bad 0.5 \
+if "$FT" compare "$tmp/f.ppm" "$tmp/r.ppm" --min-psnr 70 --max-bad 0.01 \
         --max-interior-outliers 0 >"$tmp/out" 2>&1; then
     pass=$((pass + 1))
 else
