@@ -151,7 +151,7 @@ rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
         for (int d = -1; d <= 1; d++) {
             int yy =
                 y + d < 0 ? 0 : (y + d >= o->height ? o->height - 1 : y + d);
-            int k = yy % 3;
+            unsigned k = (unsigned)yy % 3u; /* yy >= 0: o->height >= 1 */
             if (slot_y[k] != yy) {
                 row_setup(&rs, tr, cf1, o, (unsigned)yy);
                 for (unsigned x = 0; x < w; x++)

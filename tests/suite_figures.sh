@@ -473,7 +473,7 @@ fi
 rtext=$(tr '\n' ' ' <README.md | tr -s ' ')
 low=$(awk -F'|' 'NR > 2 { p = $3; gsub(/ /, "", p); n = $2; gsub(/ /, "", n)
     if (m == "" || p + 0 < m + 0) { m = p; l = n } } END { print l " " m }' "$tmp/acc")
-lq=$(echo "$rtext" | sed -nE 's/.*the lowest is `([a-z]+)` at ([0-9.]+) dB.*/\1 \2/p')
+lq=$(echo "$rtext" | sed -nE 's/.*[Tt]he lowest is `([a-z]+)` at ([0-9.]+) dB.*/\1 \2/p')
 [ "$lq" = "$low" ] && ok ||
     bad "README.md names '$lq' as the lowest scene (dB); tools/reference_table.sh measures '$low'"
 min_psnr=$(sed -nE 's/.*--min-psnr ([0-9.]+).*/\1/p' tests/suite_reference.sh | head -n 1)
