@@ -5,12 +5,14 @@
 # - for every scene, the host renderer built with the RT_NO_* flags that
 #   `fixtrace --build-flags` derives renders the very same bytes as the full
 #   build;
-# - a pruned build refuses a scene that needs a removed effect, clearly.
+# - a pruned build refuses a scene that needs a removed effect, clearly;
+# - the core compiles warning-free in every configuration of the removal
+#   flags a build can get (below), for the host and for the boards.
 set -u
 cd "$(dirname "$0")/.."
 FT=${FIXTRACE:-build/posix/fixtrace}
 MAKE=${MAKE:-make}
-pass=0 fail=0
+pass=0 fail=0 skip=0
 ok() { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAILED: $*"; }
 tmp=$(mktemp -d)
@@ -67,5 +69,115 @@ if [ -x build/pruned/diffuse/fixtrace ]; then
         bad "a build without supersampling accepted -s 4: $(cat "$tmp/err")"
 fi
 
-echo "$pass passed, $fail failed"
+# Every configuration compiles with -Werror: nothing removed, everything
+# removed, each flag alone, and each shape kept alone, with every effect
+# and with none (a firmware for a scene of one shape). A static helper
+# that only some shapes or effects use must not become unused: GCC reports
+# that only when it compiles (-fsyntax-only does not), so the core is
+# compiled for real, with the host's compiler and the core's warnings and
+# for each board in SUBSET_BOARDS (default "microbit rv32": Cortex-M0 code
+# at -Os with the smallest capacities, and RISC-V; "all" for every board)
+# with the flags mk/firmware.mk gives the core. Compile only, JOBS (2) at
+# a time. A file whose preprocessed text is the same in two
+# configurations compiles the same, so each distinct text is compiled
+# once. The flag names come from the one list, core/rt_features.h; the
+# shapes are the names rt_kind has too (core/rt_scene.h).
+names=$(sed -nE 's/^ *X\(([A-Z]+), .*/\1/p' core/rt_features.h)
+shapes="" effects=""
+for n in $names; do
+    if grep -qE "^ *RT_$n( = 0)?,$" core/rt_scene.h; then
+        shapes="$shapes $n"
+    else
+        effects="$effects $n"
+    fi
+done
+no() { local n out=""; for n in "$@"; do out="$out -DRT_NO_$n"; done; echo $out; }
+configs=("" "$(no $names)")
+for n in $names; do configs+=("-DRT_NO_$n"); done
+for s in $shapes; do
+    others=$(echo $shapes | tr ' ' '\n' | grep -vx "$s" | tr '\n' ' ')
+    configs+=("$(no $others)" "$(no $others $effects)")
+done
+[ "$(echo $shapes | wc -w)" -ge 5 ] && [ "$(echo $effects | wc -w)" -ge 8 ] &&
+    ok || bad "feature list: shapes '$shapes', effects '$effects'"
+
+# The compilers, as "name|command" (the command with its flags).
+core_warn=$($MAKE -s --no-print-directory print-CORE_WARN | sed 's/^[^=]*=//')
+compilers=("host|${CC:-gcc} -std=c99 -O2 $core_warn")
+boards=${SUBSET_BOARDS:-microbit rv32}
+[ "$boards" = all ] &&
+    boards=$(ls mk/boards/*.mk | sed 's|.*/||; s|\.mk$||' | tr '\n' ' ')
+for b in $boards; do
+    cc=$($MAKE -s --no-print-directory print-FW_CC BOARD="$b" |
+        sed 's/^[^=]*=//')
+    if ! command -v "$cc" >/dev/null; then
+        echo "SKIPPED: the configurations for BOARD=$b ($cc missing)"
+        skip=$((skip + 1))
+        continue
+    fi
+    # PRUNE=0: the board's capacities as -D options; the configuration
+    # takes the place of the generated fw_effects.h.
+    fl=$($MAKE -s --no-print-directory print-FW_CFLAGS BOARD="$b" PRUNE=0 |
+        sed 's/^[^=]*=//; s/-include [^ ]*//; s/ -g / /')
+    compilers+=("$b|$cc $fl $core_warn")
+done
+
+# throttle: waits while JOBS jobs run.
+throttle() { while [ "$(jobs -rp | wc -l)" -ge "${JOBS:-2}" ]; do wait -n; done; }
+# Preprocess: $tmp/cfg/C.K lists "file hash" for compiler C, configuration K.
+mkdir -p "$tmp/cfg" "$tmp/cc"
+for c in "${!compilers[@]}"; do
+    for k in "${!configs[@]}"; do
+        (
+            cmd=${compilers[$c]#*|}
+            for f in core/*.c; do
+                # shellcheck disable=SC2086
+                h=$($cmd ${configs[$k]} -Icore -E "$f" 2>&1 | md5sum)
+                echo "$f ${h%% *}"
+            done >"$tmp/cfg/$c.$k"
+        ) &
+        throttle
+    done
+done
+wait
+# Compile each distinct text once, with the first configuration that has it.
+declare -A seen=()
+for c in "${!compilers[@]}"; do
+    for k in "${!configs[@]}"; do
+        while read -r f h; do
+            [ -n "${seen[$c.$h]:-}" ] && continue
+            seen[$c.$h]=1
+            (
+                # shellcheck disable=SC2086
+                ${compilers[$c]#*|} ${configs[$k]} -Icore -c "$f" \
+                    -o "$tmp/cc/$c.$h.o" >"$tmp/cc/$c.$h.log" 2>&1
+                echo $? >"$tmp/cc/$c.$h.rc"
+            ) &
+            throttle
+        done <"$tmp/cfg/$c.$k"
+    done
+done
+wait
+for c in "${!compilers[@]}"; do
+    for k in "${!configs[@]}"; do
+        failed=""
+        while read -r f h; do
+            [ "$(cat "$tmp/cc/$c.$h.rc" 2>/dev/null)" = 0 ] ||
+                failed="$failed $(grep -m 1 -E ': (error|warning):' \
+                    "$tmp/cc/$c.$h.log" || echo "$f does not compile")"
+        done <"$tmp/cfg/$c.$k"
+        [ -z "$failed" ] && ok ||
+            bad "${compilers[$c]%%|*}: the core does not compile with" \
+                "[${configs[$k]:-nothing removed}]:$failed"
+    done
+done
+echo "configurations: ${#configs[@]} for $(for c in "${compilers[@]}"; do
+    printf '%s ' "${c%%|*}"; done)($(ls "$tmp"/cc/*.rc | wc -l) distinct" \
+    "compilations)"
+
+if [ $skip -gt 0 ]; then
+    echo "$pass passed, $fail failed, $skip skipped"
+else
+    echo "$pass passed, $fail failed"
+fi
 [ $fail -eq 0 ]

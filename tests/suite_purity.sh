@@ -35,32 +35,9 @@ done
 undef=$(undefined "" "$tmp/x86" 'memcpy|memset|memmove')
 [ -z "$undef" ] && ok || bad "core references symbols beyond memcpy/memset/memmove: $(echo $undef)"
 
-# 2b. The configurations build warning-free. The code reads every RT_NO_*
-# flag as a 0/1 constant in ordinary conditions (rt_config.h), so every
-# branch compiles in every configuration and a few builds cover them: none
-# removed, all removed, the effects alone, the shapes alone, and the
-# optimisations off. The flag names come from the one list, rt_features.h.
-names=$(sed -nE 's/^ *X\(([A-Z]+), .*/\1/p' core/rt_features.h)
-[ "$(echo $names | wc -w)" -ge 13 ] && ok || bad "no feature list in core/rt_features.h"
-all="" effects="" shapes=""
-for fl in $names; do
-    all="$all -DRT_NO_$fl"
-    case $fl in
-    SPHERE|QUAD|BOX|CYLINDER|CONE) shapes="$shapes -DRT_NO_$fl" ;;
-    *) effects="$effects -DRT_NO_$fl" ;;
-    esac
-done
-combo_fail=""
-for flags in "" "$all" "$effects" "$shapes" \
-             "-DRT_DIR_GRID=0 -DRT_CULL=0 -DRT_STATS=0"; do
-    for f in core/rt_*.c; do
-        gcc -std=c99 -ffreestanding -nostdlib -mgeneral-regs-only \
-            -fsyntax-only -Wall -Wextra -Werror -Wshadow -Wconversion \
-            -Wno-sign-conversion -Wmissing-prototypes -Wundef $flags \
-            -Icore "$f" 2>/dev/null || combo_fail="$combo_fail [$flags] $f;"
-    done
-done
-[ -z "$combo_fail" ] && ok || bad "effect-flag configurations that do not build:$combo_fail"
+# 2b. The configurations of the RT_NO_* flags compiling warning-free is
+# tests/suite_effects.sh's check: it compiles them (a syntax check does
+# not see an unused static function) for the host and the boards.
 
 # 3. Cortex-M0: no soft-float helpers may appear (libgcc integer helpers such
 # as __aeabi_lmul / __aeabi_uldivmod are fine).
