@@ -8,11 +8,9 @@
 /* Colour arithmetic needs no saturation: rt_render_rows accepts only
  * scenes whose colours and coefficients lie in the parser's ranges (lights
  * and ambient <= 16, the rest <= 1, kr + kt <= 1), so a channel stays below
- * RT_COLOUR_BOUND through every bounce. Rounding is fx_mul's. */
-#define RT_COLOUR_BOUND ((16 + 32 * RT_MAX_LIGHTS) * (RT_MAX_DEPTH + 1))
-#if RT_COLOUR_BOUND * 16 >= 32768
-#error "RT_MAX_LIGHTS and RT_MAX_DEPTH allow colours beyond Q16.16"
-#endif
+ * RT_COLOUR_BOUND through every bounce, which rt_config.h keeps below a
+ * sixteenth of the Q16.16 range (it limits RT_MAX_DEPTH with
+ * RT_MAX_LIGHTS). Rounding is fx_mul's. */
 
 static inline rt_rgb rt_rgb3(fx_t r, fx_t g, fx_t b)
 {

@@ -37,7 +37,8 @@
 #define RT_MAX_MATERIALS 32
 #endif
 
-/* Point lights in one scene. */
+/* Point lights in one scene; with RT_MAX_DEPTH, at most what the colour
+ * bound (below) allows: 10 at the default depth of 5, 63 at depth 0. */
 #ifndef RT_MAX_LIGHTS
 #define RT_MAX_LIGHTS 4
 #endif
@@ -58,7 +59,11 @@
 #endif
 
 /* Compile-time cap on ray recursion (reflection + refraction bounces). The
- * stack grows by one trace frame per level, so this bounds stack use. */
+ * stack grows by one trace frame per level, so this bounds stack use. It
+ * also bounds the colours, with RT_MAX_LIGHTS (the colour bound, below):
+ * (16 + 32 RT_MAX_LIGHTS) (RT_MAX_DEPTH + 1) must be below 2048, so the
+ * depth is at most 13 with 4 lights, 17 with 3, 24 with 2 and 41 with 1;
+ * lower RT_MAX_LIGHTS to go deeper. */
 #ifndef RT_MAX_DEPTH
 #define RT_MAX_DEPTH 5
 #endif
@@ -281,6 +286,16 @@
 #endif
 #if RT_MAX_NAME < 1
 #error "RT_MAX_NAME must be at least 1"
+#endif
+
+/* The colour bound. Colour arithmetic needs no saturation (rt_colour.h): a
+ * channel stays below 16 (ambient) plus 32 per light (Lambert and Phong,
+ * lights up to 16), summed over every level of recursion, and that sum is
+ * kept below 2048, a sixteenth of the Q16.16 range. With L lights the
+ * deepest recursion is 2047 / (16 + 32 L) - 1. */
+#define RT_COLOUR_BOUND ((16 + 32 * RT_MAX_LIGHTS) * (RT_MAX_DEPTH + 1))
+#if RT_COLOUR_BOUND >= 2048
+#error "RT_MAX_DEPTH and RT_MAX_LIGHTS exceed the colour bound: (16 + 32 lights) x (depth + 1) must be below 2048, so depth <= 13 with 4 lights, 17 with 3, 24 with 2, 41 with 1, and lights <= 10 at depth 5 (rt_config.h)"
 #endif
 
 #endif /* RT_CONFIG_H */

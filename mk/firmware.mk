@@ -29,8 +29,15 @@
 #   limit: a scene above it fails the build, naming the limit.
 # The flags and capacities go to build/<b>/fw_effects.h, which every C file
 # includes first, so changing SCENE or SPP rebuilds what it must.
-# A FW_DEFS that changes the parsed values (-DRT_UNIT_BITS=n,
-# -DRT_MAX_DEPTH=n) gets a host tool built with it, under build/posix-fw*.
+# A FW_CAPS or FW_DEFS that changes the parsed values (-DRT_UNIT_BITS=n,
+# -DRT_MAX_DEPTH=n; port/posix/emit_c.c lists them) gets a host tool
+# built with it and with the build's light limit (RT_MAX_LIGHTS of
+# FW_CAPS or FW_DEFS, else the default), under build/posix-fw*: depth and
+# lights must fit the colour bound together (core/rt_config.h: depth <= 13
+# with 4 lights, 17 with 3, 24 with 2, 41 with 1), in the host tool as in
+# the firmware. For example FW_DEFS="-DRT_MAX_DEPTH=16 -DRT_MAX_LIGHTS=3";
+# a pair that does not fit stops the build before anything is compiled,
+# with rt_config.h's message.
 #
 # OUTPUT=semihost (the default) sends the image and the figures through
 # semihosting (port/baremetal/out_semihost.c); OUTPUT=uart sends both on
@@ -186,9 +193,14 @@ $(FW_CONFIG): fw-force | fw-check-board
 # The host tool is built first, under a lock: parallel firmware builds
 # (tests/suite_firmware.sh runs one per board) would otherwise compile the
 # same host objects at the same time. Settings that change the parsed
-# scene (FW_HOST_DEFS) need a host tool built with them: scene_tables.c
-# refuses to compile under other values.
-FW_HOST_DEFS := $(filter -DRT_UNIT_BITS=% -DRT_MAX_DEPTH=%,$(FW_DEFS))
+# scene need a host tool built with them (scene_tables.c refuses to
+# compile under other values), and with the light limit the firmware is
+# built against, which bounds the depth (rt_config.h): FW_HOST_DEFS.
+fw_host_set = $(foreach v,$1,$(if $(call fw_cap_limit,$v),-D$v=$(call \
+    fw_cap_limit,$v)))
+FW_HOST_DEFS := $(strip $(call fw_host_set,RT_UNIT_BITS RT_MAX_DEPTH))
+FW_HOST_DEFS += $(if $(FW_HOST_DEFS),$(call fw_host_set,RT_MAX_LIGHTS))
+FW_HOST_DEFS := $(strip $(FW_HOST_DEFS))
 fw_empty :=
 fw_space := $(fw_empty) $(fw_empty)
 FW_HOST_BUILD := $(if $(FW_HOST_DEFS),build/posix-fw$(subst =,-,$(subst \
@@ -201,8 +213,14 @@ FW_EFFECTS_NOTE := $(if $(FW_PRUNING),built for $(SCENE)$(if \
 FW_LOCK := $(if $(shell command -v flock 2>/dev/null),\
     flock $(dir $(FW_FIXTRACE)).fw-host.lock)
 
+# A configuration rt_config.h refuses (a depth too deep for the lights)
+# is said once, before any host object is compiled.
 .PHONY: fw-host-tool
 fw-host-tool:
+	$(Q)$(if $(FW_HOST_DEFS),echo '#include "rt_config.h"' | $(CC) \
+	    -std=c99 -fsyntax-only $(FW_HOST_DEFS) -Icore -x c - || { echo \
+	    "firmware: the host tool cannot be built with $(FW_HOST_DEFS)" \
+	    "(above; FW_CAPS and FW_DEFS)" >&2; exit 1; })
 	$(Q)mkdir -p $(dir $(FW_FIXTRACE))
 	$(Q)$(FW_LOCK) $(MAKE) --no-print-directory -s -f $(firstword \
 	    $(MAKEFILE_LIST)) $(if $(FW_HOST_DEFS),HOST_BUILD=$(FW_HOST_BUILD) \

@@ -11,7 +11,11 @@
 #   runs cleanly under ASan, the capacities given as -D options, as
 #   -DRT_CONFIG_FILE, as fixtrace_conf.h found on the include path, or
 #   with -DRT_USE_CONF_FILE; a fixtrace_conf.h that only the application
-#   sees is caught too; and clang finds fixtrace_conf.h as GCC does.
+#   sees is caught too; and clang finds fixtrace_conf.h as GCC does;
+# - the colour bound (core/rt_config.h): the core compiles at the deepest
+#   RT_MAX_DEPTH each light count allows and refuses one level more, with
+#   a message that gives the limits; rt_config.h and docs/embedding.md
+#   state the limits the compiler enforces.
 set -u
 cd "$(dirname "$0")/.."
 CC=${CC:-gcc}
@@ -153,6 +157,42 @@ if command -v clang >/dev/null 2>&1; then
 else
     echo "note: clang missing; fixtrace_conf.h checked with $CC only"
 fi
+
+# The colour bound: with L lights the deepest recursion is
+# 2047 / (16 + 32 L) - 1, and at the default depth of 5 at most 10 lights.
+# The core compiles at each limit; one more is refused by rt_config.h,
+# whose message gives the limits, before any file of the core is compiled.
+limits=""
+for l in 4 3 2 1 10; do
+    if [ "$l" = 10 ]; then d=5; else d=$((2047 / (16 + 32 * l) - 1)); fi
+    [ "$l" = 10 ] || limits="$limits${limits:+, }$d with $l"
+    if core "l${l}d$d" -DRT_MAX_LIGHTS=$l -DRT_MAX_DEPTH=$d; then
+        ok
+    else
+        bad "RT_MAX_LIGHTS=$l RT_MAX_DEPTH=$d does not compile:" \
+            "$(head -c 300 "$tmp/l${l}d$d.err")"
+    fi
+    for more in "-DRT_MAX_LIGHTS=$l -DRT_MAX_DEPTH=$((d + 1))" \
+                "-DRT_MAX_LIGHTS=$((l + 1)) -DRT_MAX_DEPTH=$d"; do
+        # shellcheck disable=SC2086
+        if echo '#include "rt_scene.h"' | $CC $CFLAGS $more -Icore -x c - \
+            -fsyntax-only 2>"$tmp/err"; then
+            bad "$more compiled: beyond the colour bound"
+        else
+            grep -q "depth <= 13 with 4 lights, 17 with 3, 24 with 2, 41 with 1, and lights <= 10 at depth 5" \
+                "$tmp/err" && ok || bad "$more: $(head -c 300 "$tmp/err")"
+        fi
+    done
+done
+# The same limits in the message, in rt_config.h's comment and in
+# docs/embedding.md (the comment and the page wrap their lines).
+[ "$limits" = "13 with 4, 17 with 3, 24 with 2, 41 with 1" ] && ok ||
+    bad "the computed limits are '$limits'"
+flat() { sed 's/^ *\* \{0,1\}//' "$1" | tr '\n' ' ' | tr -s ' '; }
+flat core/rt_config.h | grep -q "depth is at most 13 with 4 lights, 17 with 3, 24 with 2 and 41 with 1" &&
+    ok || bad "core/rt_config.h does not state the depth limits at RT_MAX_DEPTH"
+flat docs/embedding.md | grep -q "at most 13 with 4 lights (the defaults), 17 with 3, 24 with 2 and 41 with 1, and at the default depth of 5 .RT_MAX_LIGHTS. is at most 10" &&
+    ok || bad "docs/embedding.md does not state the depth and light limits"
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

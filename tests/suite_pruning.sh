@@ -16,6 +16,14 @@
 #   naming the limit;
 # - a firmware with an effect removed by hand refuses the seed scene with
 #   a message naming the effect and exit status 4, and sends no image;
+# - the host tool that parses the scene is built with the settings of
+#   FW_DEFS and FW_CAPS that change the parsed scene (RT_MAX_DEPTH,
+#   RT_UNIT_BITS) and with the light limit the depth must fit
+#   (core/rt_config.h's colour bound): 16 deep with 2 lights, and 16-bit
+#   unit vectors, render the host's bytes for those settings; 16 deep with
+#   the default 4 lights stops with rt_config.h's message before
+#   anything is compiled; the micro:bit's light limit reaches its host
+#   tool;
 # - the minimal renderer (bench/minimal) still renders the host's bytes.
 set -u
 cd "$(dirname "$0")/.."
@@ -174,6 +182,52 @@ if [ "$rc" = 4 ] && grep -q 'needs reflection.*built without it' \
 else
     bad "seed on a firmware without reflection: exit '$rc'," \
         "$(grep -v '^qemu:' "$tmp/refuse.log" | head -c 300)"
+fi
+
+# Settings that change the parsed scene reach the host tool, with the
+# light limit the depth must fit. The mirrors 16 deep (its two lights):
+# the firmware renders the bytes of a host build with the same settings,
+# and not those of depth 5.
+sed 's/^image 640 480 depth 5$/image 640 480 depth 16/' scenes/mirrors.scene \
+    >"$tmp/deep.scene"
+grep -q 'depth 16' "$tmp/deep.scene" || bad "no depth 16 in $tmp/deep.scene"
+for run in "deep|$tmp/deep.scene|-DRT_MAX_DEPTH=16 -DRT_MAX_LIGHTS=2" \
+           "unit16|scenes/mirrors.scene|-DRT_UNIT_BITS=16"; do
+    name=${run%%|*} defs=${run##*|} scene=${run#*|}
+    scene=${scene%%|*} host=$B/host-$name
+    if fw "$name" qemu SCENE="$scene" FW_DEFS="$defs" &&
+        "$MK" -s HOST_BUILD="$host" RT_DEFS="$defs" "$host/fixtrace" \
+            >>"$tmp/$name.log" 2>&1 &&
+        "$host/fixtrace" -q -W $W -H $H -o "$tmp/$name.ppm" "$scene" &&
+        cmp -s "$B/$name/out.ppm" "$tmp/$name.ppm"; then
+        ok
+    else
+        bad "FW_DEFS='$defs': $(grep -v '^  ' "$tmp/$name.log" | tail -n 4)"
+    fi
+done
+"$B/host-deep/fixtrace" -q -W $W -H $H -d 5 -o "$tmp/depth5.ppm" \
+    "$tmp/deep.scene" 2>/dev/null
+cmp -s "$tmp/depth5.ppm" "$tmp/deep.ppm" &&
+    bad "the mirrors at depth 16 look as at depth 5" || ok
+# 16 deep with 4 lights does not fit: said once, nothing compiled.
+if fw deep4 firmware SCENE="$tmp/deep.scene" FW_DEFS=-DRT_MAX_DEPTH=16; then
+    bad "RT_MAX_DEPTH=16 with 4 lights built"
+elif grep -q 'depth <= 13 with 4 lights, 17 with 3, 24 with 2, 41 with 1' \
+        "$tmp/deep4.log" &&
+    grep -q 'host tool cannot be built with -DRT_MAX_DEPTH=16' \
+        "$tmp/deep4.log" && ! grep -q '^  CC ' "$tmp/deep4.log"; then
+    ok
+else
+    bad "RT_MAX_DEPTH=16 with 4 lights: $(head -c 600 "$tmp/deep4.log")"
+fi
+# The micro:bit allows 2 lights (FW_CAPS): 16 deep fits, in its host tool
+# as in its firmware.
+if "$MK" -s firmware BOARD=microbit FW_BUILD="$B/microbit-deep" WIDTH=$W \
+    HEIGHT=$H SCENE="$tmp/deep.scene" FW_DEFS=-DRT_MAX_DEPTH=16 \
+    >"$tmp/mb.log" 2>&1; then
+    ok
+else
+    bad "micro:bit with RT_MAX_DEPTH=16: $(grep -v '^  ' "$tmp/mb.log" | head -c 600)"
 fi
 
 # Every scene: the pruned firmware (its own flags and tables) renders the
