@@ -15,6 +15,9 @@
 #define IOR_MIN ((fx_t)655)  /* 0.01, as the parser rounds it */
 #define IOR_MAX FX_INT(100)
 #define BUMP_MAX FX_INT(4)
+/* Texture and bump sizes: at least one ulp, the limit stated for a size
+ * that rounds to 0 too. Cells are exact at any size (rt_texture.c). */
+#define SIZE_RULE "at least 0.0000153 (2^-16, the smallest Q16.16 step)"
 #define DEF_AMBIENT ((fx_t)6554)  /* 0.1 */
 #define DEF_DIFFUSE ((fx_t)58982) /* 0.9 */
 #define DEF_SPECULAR FX_HALF
@@ -81,7 +84,7 @@ static rt_status mat_field(rt_lex *p, int k, rt_material *m)
         TRY(rt_lex_get_fxs(p, "bump", "amplitude", 1, &m->bump, 0, BUMP_MAX,
                            "in [0, 4]"));
         return rt_lex_get_fxs(p, "bump", "size", 1, &m->bump_scale, 1,
-                              FX_MAX, "> 0");
+                              FX_MAX, SIZE_RULE);
     case M_STRIPES: {
         static const char *const axes[] = {"x", "y", "z", NULL};
         rt_lex_token tk;
@@ -98,14 +101,14 @@ static rt_status mat_field(rt_lex *p, int k, rt_material *m)
         m->axis = (uint8_t)a;
         TRY(rt_lex_get_rgb(p, "stripes", &m->color2, one));
         return rt_lex_get_fxs(p, "stripes", "width", 1, &m->tex_scale, 1,
-                              FX_MAX, "> 0");
+                              FX_MAX, SIZE_RULE);
     }
     default: { /* M_CHECKER, M_CHECKER3D */
         const char *w = k == M_CHECKER ? "checker" : "checker3d";
         m->texture = k == M_CHECKER ? RT_TEX_CHECKER : RT_TEX_CHECKER3D;
         TRY(rt_lex_get_rgb(p, w, &m->color2, one));
         return rt_lex_get_fxs(p, w, "size", 1, &m->tex_scale, 1, FX_MAX,
-                              "> 0");
+                              SIZE_RULE);
     }
     }
 }

@@ -704,11 +704,21 @@ static void test_material_errors(void)
         "'stripes' needs an axis (x, y or z); got 'w'");
     BAD("material x color 1 1 1 stripes", PE, 1, 31, "got end of line");
     BAD("material x color 1 1 1 stripes x 1 1 1 0", PE, 1, 40,
-        "stripes width must be > 0");
+        "stripes width must be at least 0.0000153 (2^-16, the smallest "
+        "Q16.16 step)");
+    /* A positive size below half an ulp rounds to 0: the same limit, at
+     * the size. */
+    BAD("material x color 1 1 1 stripes x 1 1 1 0.000007", PE, 1, 40,
+        "stripes width must be at least 0.0000153");
     BAD("material x color 1 1 1 stripes x 1 1 1", PE, 1, 39,
         "'stripes' needs a number (width); got end of line");
     BAD("material x color 1 1 1 checker 1 1 1 -1", PE, 1, 38,
-        "checker size must be > 0");
+        "checker size must be at least 0.0000153");
+    BAD("material x color 1 1 1 checker 1 1 1 0.000001", PE, 1, 38,
+        "checker size must be at least 0.0000153 (2^-16, the smallest "
+        "Q16.16 step)");
+    BAD("material x color 1 1 1 checker3d 1 1 1 0.0000076", PE, 1, 40,
+        "checker3d size must be at least 0.0000153");
     BAD("material x color 1 1 1 checker3d 1 1 2 1", PE, 1, 38,
         "checker3d must be in [0, 1]");
     BAD("material x color 1 1 1 checker 0 0 0 1 stripes x 0 0 0 1", PE, 1,
@@ -720,7 +730,10 @@ static void test_material_errors(void)
     BAD("material x color 1 1 1 bump 5 1", PE, 1, 29,
         "bump amplitude must be in [0, 4]");
     BAD("material x color 1 1 1 bump 0.5 0", PE, 1, 33,
-        "bump size must be > 0");
+        "bump size must be at least 0.0000153");
+    BAD("material x color 1 1 1 bump 0.5 0.000005", PE, 1, 33,
+        "bump size must be at least 0.0000153 (2^-16, the smallest Q16.16 "
+        "step)");
     BAD("material x color 1 1 1 bump 0.5", PE, 1, 32,
         "'bump' needs a number (size)");
     /* Capacity. */

@@ -194,7 +194,10 @@ double rnd(void);
     X(acne_open_shapes) \
     X(adaptive_bands_deterministic) \
     X(scenes_no_speckles) \
-    X(seed_no_acne_320)
+    X(seed_no_acne_320) \
+    X(texture_cells_1ulp) \
+    X(bump_lattice_1ulp) \
+    X(texture_size_below_1ulp)
 
 #define STAB_DECLARE(n) void case_##n(void);
 STAB_CASES(STAB_DECLARE)
