@@ -14,11 +14,13 @@
  * tables walked by kind, no options.
  *
  * The constants are what the core derives from the scene text (rt_parse,
- * rt_object_prepare, cam_setup), copied as integers. Image size:
- * -DMIN_W=... -DMIN_H=... (mk/bench.mk passes WIDTH and HEIGHT).
+ * rt_object_prepare), copied as integers; the camera frame is
+ * rt_cam_setup's, once per frame. Image size: -DMIN_W=... -DMIN_H=...
+ * (mk/bench.mk passes WIDTH and HEIGHT).
  */
 #include "port.h"
-#include "fx_vec.h"
+#include "rt_camera.h"
+#include "rt_ray.h" /* RT_PAR_DOT */
 
 #ifndef MIN_W
 #define MIN_W 320
@@ -29,14 +31,11 @@
 
 #define EPS ((fx_t)128) /* 1/512: t_min and the secondary-ray offset */
 #define NONE 4u         /* "skip no object" */
+#define UHALF ((int64_t)1 << (FX_UBITS - 1))
 
-/* Camera: eye (0, 5, -14) looking at (0, 1, 0), fov 50. right is exactly
- * (1, 0, 0), so a ray direction is (sx, base.y, base.z) before
- * normalising; HALF is tan(25 degrees). */
+/* Camera: eye (0, 5, -14) looking at (0, 1, 0), up (0, 1, 0), fov 50;
+ * rt_cam_setup derives the frame (right is exactly (1, 0, 0)). */
 static const fx_vec3 eye = { 0, 327680, -917504 };
-static const fx_vec3 cam_w = { 0, -18004, 63014 };
-static const fx_vec3 cam_up = { 0, 63014, 18004 };
-#define HALF ((int64_t)30560)
 
 static const fx_vec3 light = { 655360, 2621440, -327680 }; /* colour 1 */
 static const fx_t background[3] = { 19661, 22938, 32768 };
@@ -50,6 +49,9 @@ static const fx_vec3 centre[4] = {
     { 0, 0, 0 }, { -229376, 98304, 65536 }, { 0, 98304, -65536 },
     { 229376, 98304, 65536 }
 };
+/* 1 / RADIUS for the normals, as rt_object_prepare derives it. */
+static uint32_t rinv;
+#define RADIUS_BITS 17 /* bit length of RADIUS */
 
 /* Material colours; ambient term ka * colour (ka = 0.1, ambient light 1)
  * and kd = 0.9 as the parser's defaults give them. */
@@ -61,44 +63,80 @@ static const fx_t colour[4][3] = {
 };
 
 /* Ray against the floor plane: t in (EPS, tmax), or 0. As the core's quad
- * test with n = (0, 1, 0), dist = 0 and in-plane axes z and x. */
-static fx_t hit_floor(fx_vec3 o, fx_vec3 d, fx_t tmax)
+ * test with n = (0, 1, 0), dist = 0 and in-plane axes z and x: t = -o.y /
+ * d.y, rounded, by a division by den's top 32 bits. */
+static fx_t hit_floor(fx_vec3 o, fx_dir3 d, fx_t tmax)
 {
-    int64_t den = (int64_t)d.y << 16, num = -((int64_t)o.y << 16);
-    if (den < 65536 && den > -65536)
+    int64_t den = fx_imul64(d.y, FX_UONE), num = -fx_imul64(o.y, FX_UONE);
+    if (den < RT_PAR_DOT && den > -RT_PAR_DOT)
         return 0;
     if ((num < 0) != (den < 0))
         return 0;
-    int64_t tt = (num * 256) / (den >> 8);
+    uint64_t un = (uint64_t)(num < 0 ? -num : num);
+    uint64_t uden = (uint64_t)(den < 0 ? -den : den);
+    int sd = 32 - fx_clz64(uden);
+    if (sd < 0)
+        sd = 0;
+    const uint32_t ud = (uint32_t)(uden >> sd);
+    const int lsh = FX_UBITS - sd;
+    if ((un >> (32 - lsh)) >= ud)
+        return 0;
+    const uint64_t n2 = (un << lsh) + (ud >> 1);
+    if ((n2 >> 32) >= ud)
+        return 0;
+    int64_t tt = fx_udiv64_32(n2, ud);
     if (tt <= EPS || tt >= tmax)
         return 0;
-    int64_t qx = (int64_t)o.x + ((tt * d.x + 0x8000) >> 16) - FLOOR_MIN;
-    int64_t qz = (int64_t)o.z + ((tt * d.z + 0x8000) >> 16) - FLOOR_MIN;
+    int64_t qx = (int64_t)o.x + ((tt * d.x + UHALF) >> FX_UBITS) - FLOOR_MIN;
+    int64_t qz = (int64_t)o.z + ((tt * d.z + UHALF) >> FX_UBITS) - FLOOR_MIN;
     if (qx < 0 || qz < 0 || qx > FLOOR_SIZE || qz > FLOOR_SIZE)
         return 0;
     return (fx_t)tt;
 }
 
 /* Ray against sphere i: the nearer root in (EPS, tmax), or 0. The core's
- * geometric test (closest approach, then the half chord), exact in 64
- * bits. */
-static fx_t hit_sphere(unsigned i, fx_vec3 o, fx_vec3 d, fx_t tmax)
+ * geometric test (closest approach corrected for |d|, then the half
+ * chord, formed again with 12 more bits near the silhouette). */
+static fx_t hit_sphere(unsigned i, fx_vec3 o, fx_dir3 d, int32_t e,
+                       fx_t tmax)
 {
-    const int64_t r = RADIUS;
-    int64_t ox = (int64_t)centre[i].x - o.x;
-    int64_t oy = (int64_t)centre[i].y - o.y;
-    int64_t oz = (int64_t)centre[i].z - o.z;
-    int64_t t = (ox * d.x + oy * d.y + oz * d.z + 0x8000) >> 16;
-    int64_t hx = ox - ((t * d.x + 0x8000) >> 16);
-    int64_t hy = oy - ((t * d.y + 0x8000) >> 16);
-    int64_t hz = oz - ((t * d.z + 0x8000) >> 16);
-    if (hx > r || hx < -r || hy > r || hy < -r || hz > r || hz < -r)
+    const int32_t r = RADIUS;
+    int32_t ox = centre[i].x - o.x, oy = centre[i].y - o.y;
+    int32_t oz = centre[i].z - o.z;
+    int64_t q = fx_imul64(ox, d.x) + fx_imul64(oy, d.y) + fx_imul64(oz, d.z);
+    int32_t t = (int32_t)((q + UHALF) >> FX_UBITS);
+    t -= (int32_t)((fx_imul64(t, e) + ((int64_t)1 << 31)) >> 32);
+    if ((int64_t)t + r <= EPS || (int64_t)t - r >= tmax)
         return 0;
-    uint64_t h2 = (uint64_t)(hx * hx) + (uint64_t)(hy * hy) +
-                  (uint64_t)(hz * hz);
-    if (h2 > (uint64_t)(r * r))
+    int32_t hx = ox - (int32_t)((fx_imul64(t, d.x) + UHALF) >> FX_UBITS);
+    int32_t hy = oy - (int32_t)((fx_imul64(t, d.y) + UHALF) >> FX_UBITS);
+    int32_t hz = oz - (int32_t)((fx_imul64(t, d.z) + UHALF) >> FX_UBITS);
+    if (hx > r + 1 || hx < -r - 1 || hy > r + 1 || hy < -r - 1 ||
+        hz > r + 1 || hz < -r - 1)
         return 0;
-    int64_t thc = fx_sqrt_q32((uint64_t)(r * r) - h2);
+    uint64_t h2 = (uint64_t)fx_imul64(hx, hx) + (uint64_t)fx_imul64(hy, hy) +
+                  (uint64_t)fx_imul64(hz, hz);
+    uint64_t r2 = (uint64_t)fx_imul64(r, r), disc;
+    if ((h2 > r2 ? h2 - r2 : r2 - h2) <= 2 * (uint64_t)r + 8) {
+        /* bsphere_fine: e = 12 bits more (clz(r) - 2 = 12 <= 14). */
+        const int eb = 12, sh = FX_UBITS - eb;
+        const int64_t half = (int64_t)1 << (sh - 1);
+        const int64_t fx = (int64_t)ox * 4096 - ((fx_imul64(t, d.x) + half) >> sh);
+        const int64_t fy = (int64_t)oy * 4096 - ((fx_imul64(t, d.y) + half) >> sh);
+        const int64_t fz = (int64_t)oz * 4096 - ((fx_imul64(t, d.z) + half) >> sh);
+        const uint64_t f2 = (uint64_t)(fx * fx) + (uint64_t)(fy * fy) +
+                            (uint64_t)(fz * fz);
+        const uint64_t re = (uint64_t)r << eb, rr = re * re;
+        if (f2 > rr)
+            return 0;
+        disc = (rr - f2) >> (2 * eb);
+    } else {
+        if (h2 > r2)
+            return 0;
+        disc = r2 - h2;
+    }
+    int64_t thc = fx_sqrt_q32(disc);
+    thc -= (thc * e + ((int64_t)1 << 32)) >> 33;
     if (t - thc > EPS && t - thc < tmax)
         return (fx_t)(t - thc);
     if (t + thc > EPS && t + thc < tmax)
@@ -107,18 +145,19 @@ static fx_t hit_sphere(unsigned i, fx_vec3 o, fx_vec3 d, fx_t tmax)
 }
 
 /* Object i's hit distance below tmax, or 0. */
-static fx_t hit(unsigned i, fx_vec3 o, fx_vec3 d, fx_t tmax)
+static fx_t hit(unsigned i, fx_vec3 o, fx_dir3 d, int32_t e, fx_t tmax)
 {
-    return i == 0 ? hit_floor(o, d, tmax) : hit_sphere(i, o, d, tmax);
+    return i == 0 ? hit_floor(o, d, tmax) : hit_sphere(i, o, d, e, tmax);
 }
 
 /* Colour of a camera ray (unclamped), one channel per entry. */
-static void trace(fx_vec3 d, fx_t c[3])
+static void trace(fx_dir3 d, fx_t c[3])
 {
     fx_t best = FX_MAX, t;
     unsigned oi = NONE;
+    const int32_t e = fx_d3_unit_err(d);
     for (unsigned i = 0; i < 4; i++) {
-        if ((t = hit(i, eye, d, best)) != 0) {
+        if ((t = hit(i, eye, d, e, best)) != 0) {
             best = t;
             oi = i;
         }
@@ -127,57 +166,71 @@ static void trace(fx_vec3 d, fx_t c[3])
         c[0] = background[0], c[1] = background[1], c[2] = background[2];
         return;
     }
-    fx_vec3 p = fx_v3_madd(eye, d, best);
-    fx_vec3 n = oi == 0 ? fx_v3(0, FX_ONE, 0)
-                        : fx_v3_normalize(fx_v3_sub(p, centre[oi]));
-    int outside = oi == 0 || fx_v3_dot_q32(d, n) <= 0;
-    if (fx_v3_dot_q32(d, n) > 0)
-        n = fx_v3_neg(n); /* face the ray */
+    fx_vec3 p = fx_v3_madd_d(eye, d, best);
+    fx_dir3 n = fx_d3(0, FX_UONE, 0);
+    if (oi != 0) { /* (p - c) / r and one Newton step, as rt_normal */
+        const int sh = RADIUS_BITS + 1;
+        const int64_t half = (int64_t)1 << (sh - 1);
+        const fx_vec3 v = fx_v3_sub(p, centre[oi]);
+        n = fx_d3_renorm(
+            fx_d3((int32_t)((fx_iumul64(v.x, rinv) + half) >> sh),
+                  (int32_t)((fx_iumul64(v.y, rinv) + half) >> sh),
+                  (int32_t)((fx_iumul64(v.z, rinv) + half) >> sh)));
+    }
+    const int64_t dn = fx_d3_dot_raw(d, n);
+    int outside = oi == 0 || dn <= 0;
+    if (dn > 0)
+        n = fx_d3_neg(n); /* face the ray */
     const fx_t *base = colour[oi];
     for (int k = 0; k < 3; k++)
         c[k] = fx_mul(base[k], KA);
 
     fx_vec3 lv = fx_v3_sub(light, p);
-    fx_vec3 ld = fx_v3_normalize(lv);
-    fx_t ndl = fx_v3_dotn(n, ld);
+    fx_dir3 ld = fx_d3_normalize(lv);
+    fx_t ndl = fx_d3_dot(n, ld);
     if (ndl <= 0)
         return;
     /* Hard shadow: any blocker between the surface and the light. A
      * convex object cannot shadow the outside of itself. */
-    fx_vec3 p_out = fx_v3_madd(p, n, EPS);
-    fx_t tmax = fx_sub(fx_v3_dotn(lv, ld), EPS); /* |lv| = lv . norm(lv) */
+    fx_vec3 p_out = fx_v3_madd_d(p, n, EPS);
+    fx_t tmax = fx_sub(fx_pd_dot(lv, ld), EPS); /* |lv| = lv . norm(lv) */
+    const int32_t el = fx_d3_unit_err(ld);
     unsigned skip = outside ? oi : NONE;
     for (unsigned i = 0; i < 4; i++)
-        if (i != skip && hit(i, p_out, ld, tmax))
+        if (i != skip && hit(i, p_out, ld, el, tmax))
             return;
     fx_t w = fx_mul(KD, ndl); /* Lambert */
     for (int k = 0; k < 3; k++)
         c[k] = fx_add(c[k], fx_mul(base[k], w));
 }
 
-/* Screen offset k * tan(fov/2) / H as Q16.16, as the core's cam_offset. */
-static fx_t offset(int64_t step, int32_t k)
-{
-    return fx_sat64(((int64_t)k * step + 0x8000) >> 16);
-}
+static uint8_t row[3 * MIN_W];
 
 #define STR2(x) #x
 #define STR(x) STR2(x)
 
-static uint8_t row[3 * MIN_W];
-
 int main(void)
 {
     static const char header[] = "P6\n" STR(MIN_W) " " STR(MIN_H) "\n255\n";
-    const int64_t step = (HALF * 65536) / MIN_H;
+    static rt_scene s; /* only its camera: rt_cam_setup's frame */
+    s.cam.eye = eye;
+    s.cam.look = fx_v3(0, 65536, 0);
+    s.cam.up = fx_v3(0, 65536, 0);
+    s.cam.fov = FX_INT(50);
+    rt_cam_frame cf;
+    rt_cam_setup(&cf, &s, MIN_W, MIN_H, 1);
+    rinv = fx_udiv64_32(((uint64_t)1 << (31 + RADIUS_BITS)) - 1u,
+                        (uint32_t)RADIUS);
     port_init();
     port_write(header, sizeof header - 1);
     uint64_t t0 = port_cycles();
     for (int32_t y = 0; y < MIN_H; y++) {
-        fx_vec3 base = fx_v3_madd(cam_w, cam_up, offset(step, MIN_H - 2 * y - 1));
+        const rt_cam_ray base =
+            rt_cam_row_base(&cf, rt_cam_soff(&cf, MIN_H - 2 * y - 1));
         for (int32_t x = 0; x < MIN_W; x++) {
-            fx_t sx = offset(step, 2 * x + 1 - MIN_W), c[3];
-            trace(fx_v3_normalize(fx_v3(sx, base.y, base.z)), c);
+            fx_t c[3];
+            trace(rt_cam_dir(&cf, &base, rt_cam_soff(&cf, 2 * x + 1 - MIN_W)),
+                  c);
             for (int k = 0; k < 3; k++)
                 row[3 * x + k] = fx_to_u8(c[k]); /* clamps to [0, 1] */
         }
