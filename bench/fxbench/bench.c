@@ -82,6 +82,7 @@ static fx_t sgn(uint32_t m)
 static fx_t A[N], B[N];
 static uint64_t Q[N];
 static fx_vec3 V[N];
+static fx_dir3 D[N];
 static volatile uint32_t sink;
 
 /* The second operand of the two-vector ops: a rotated copy. */
@@ -149,8 +150,8 @@ static void shapes(uint32_t bv)
                                 o.bc.y + (fx_t)(rnd() % (uint32_t)(2 * reach)) - reach,
                                 o.bc.z);
             R[i].o = org;
-            R[i].d = fx_v3_normalize(fx_v3_sub(aim, org));
-            R[i].e = rt_unit_err(R[i].d);
+            R[i].d = fx_d3_normalize(fx_v3_sub(aim, org));
+            R[i].e = fx_d3_unit_err(R[i].d);
             R[i].small = (uint8_t)fx_v3_small(org);
         }
         fx_t t;
@@ -215,6 +216,18 @@ int main(void)
     {
         fx_vec3 u;
         report("normalize ", LOOP((u = fx_v3_normalize(V[i]), u.x ^ u.y ^ u.z)),
+               bv);
+    }
+    {
+        fx_dir3 u;
+        report("d3_norm   ", LOOP((u = fx_d3_normalize(V[i]), u.x ^ u.y ^ u.z)),
+               bv);
+        /* A unit vector a few ulps off unit length, renormalised. */
+        for (i = 0; i < N; i++) {
+            fx_dir3 w = fx_d3_normalize(V[i]);
+            D[i] = fx_d3(w.x + (int32_t)(rnd() % 7) - 3, w.y, w.z);
+        }
+        report("d3_renorm ", LOOP((u = fx_d3_renorm(D[i]), u.x ^ u.y ^ u.z)),
                bv);
     }
     shapes(bv);

@@ -29,6 +29,7 @@ for cpu in cortex-m3 cortex-m0; do
         -Wl,--gc-sections -Wl,-Map="$elf.map" \
         bench/fxbench/startup.c bench/fxbench/bench.c \
         "$CORE"/fx_math.c "$CORE"/fx_sqrt.c "$CORE"/fx_vec.c \
+        "$CORE"/fx_dir.c "$CORE"/fx_rsqrt.c \
         "$CORE"/rt_intersect.c "$CORE"/rt_scene.c \
         -lgcc -o "$elf"
     echo "== $cpu ($CORE)"
