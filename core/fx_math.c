@@ -81,6 +81,21 @@ fx_t fx_recip(fx_t a)
     return sat_signed(q, a < 0);
 }
 
+int64_t fx_imul64_call(int32_t a, int32_t b)
+{
+    return fx_imul64_soft(a, b);
+}
+
+int64_t fx_iumul64_call(int32_t a, uint32_t b)
+{
+    return fx_iumul64_soft(a, b);
+}
+
+uint64_t fx_umul64_call(uint32_t a, uint32_t b)
+{
+    return fx_umul64_soft(a, b);
+}
+
 uint32_t fx_udiv64_32(uint64_t n, uint32_t d)
 {
     /* Long division in base 2^16 after normalising d (Knuth's algorithm D

@@ -96,20 +96,38 @@ static inline uint64_t fx_umul64_soft(uint32_t a, uint32_t b)
     return ((uint64_t)(ah * bh) << 32) + (mid << 16) + al * bl;
 }
 
+/* The same, out of line (fx_math.c). A file whose functions recurse (the
+ * shading loop, rt_shade.c) defines FX_MUL64_CALL 1 before its includes:
+ * there a dozen inline copies crowd the registers and grow the frame that
+ * every bounce level pays (1,840 bytes instead of 512 on the M0), while a
+ * call costs a few instructions. */
+#ifndef FX_MUL64_CALL
+#define FX_MUL64_CALL 0
+#endif
+int64_t fx_imul64_call(int32_t a, int32_t b);
+int64_t fx_iumul64_call(int32_t a, uint32_t b);
+uint64_t fx_umul64_call(uint32_t a, uint32_t b);
+
 /* The exact 64-bit products of 32-bit operands (FX_SOFT_MUL64). */
 static inline int64_t fx_imul64(int32_t a, int32_t b)
 {
-    return FX_SOFT_MUL64 ? fx_imul64_soft(a, b) : (int64_t)a * b;
+    if (!FX_SOFT_MUL64)
+        return (int64_t)a * b;
+    return FX_MUL64_CALL ? fx_imul64_call(a, b) : fx_imul64_soft(a, b);
 }
 
 static inline int64_t fx_iumul64(int32_t a, uint32_t b)
 {
-    return FX_SOFT_MUL64 ? fx_iumul64_soft(a, b) : (int64_t)a * b;
+    if (!FX_SOFT_MUL64)
+        return (int64_t)a * b;
+    return FX_MUL64_CALL ? fx_iumul64_call(a, b) : fx_iumul64_soft(a, b);
 }
 
 static inline uint64_t fx_umul64(uint32_t a, uint32_t b)
 {
-    return FX_SOFT_MUL64 ? fx_umul64_soft(a, b) : (uint64_t)a * b;
+    if (!FX_SOFT_MUL64)
+        return (uint64_t)a * b;
+    return FX_MUL64_CALL ? fx_umul64_call(a, b) : fx_umul64_soft(a, b);
 }
 
 /* Adds; exact, saturates on overflow. */

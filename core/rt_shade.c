@@ -8,6 +8,9 @@
  * one call away, in the header named for it; each RT_HAS_* condition is a
  * compile-time constant (rt_config.h).
  */
+/* Products by call where the core has no 64-bit multiply: this file's
+ * frame is paid once per bounce level (fx_math.h, FX_MUL64_CALL). */
+#define FX_MUL64_CALL 1
 #include "rt_bounce.h"
 #include "rt_colour.h"
 #include "rt_cutoff.h"
