@@ -76,7 +76,7 @@ if cmake -S "$SRC" -B "$tmp/lib" -DCMAKE_INSTALL_PREFIX="$prefix" \
     done
     [ -z "$missing" ] && ok || bad "the install lacks:$missing"
     extra=$(cd "$prefix" && ls include/fixtrace | grep -vxE \
-        'fx_math.h|fx_vec.h|rt_config.h|rt_features.h|rt_parse.h|rt_render.h|rt_scene.h')
+        'fx_dir.h|fx_math.h|fx_vec.h|rt_config.h|rt_features.h|rt_parse.h|rt_render.h|rt_scene.h')
     [ -z "$extra" ] && ok || bad "the install has internal headers: $extra"
     [ ! -e "$prefix/include/rt_render.h" ] && ok ||
         bad "headers installed straight into include/"
