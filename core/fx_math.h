@@ -265,18 +265,21 @@ uint32_t fx_udiv64_32(uint64_t n, uint32_t d);
 int64_t fx_tan_half_deg_q32(fx_t deg);
 
 /* x^n for 0 <= x <= 1 by repeated squaring; each product rounds as fx_mul,
- * so the result is within about n ulps and never above 1. */
+ * so the result is within about n ulps and never above 1. Every factor is
+ * in [0, 1], so a product is at most 2^32 and never saturates: an unsigned
+ * 32x32->64 multiply and the rounding shift give fx_mul's bits without
+ * its range checks (a Phong power is one per light and hit). */
 static inline fx_t fx_powi(fx_t x, unsigned n)
 {
-    fx_t r = FX_ONE;
+    uint32_t r = FX_ONE, b = (uint32_t)x;
     while (n) {
         if (n & 1)
-            r = fx_mul(r, x);
+            r = (uint32_t)((fx_umul64(r, b) + 0x8000u) >> 16);
         n >>= 1;
         if (n)
-            x = fx_mul(x, x);
+            b = (uint32_t)((fx_umul64(b, b) + 0x8000u) >> 16);
     }
-    return r;
+    return (fx_t)r;
 }
 
 /* floor(x), as an integer (exact). */
