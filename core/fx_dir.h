@@ -117,6 +117,17 @@ static inline fx_vec3 fx_v3_madd_d(fx_vec3 a, fx_dir3 d, fx_t s)
                  fx_madd_u(a.z, d.z, s));
 }
 
+/* fx_v3_madd_d for a point a within 2^29 (fx_v3_small) and 0 <= s < 2^30:
+ * the sum stays below 2^31, so the same values without the saturating
+ * add. A hit point along a ray from a small origin. */
+static inline fx_vec3 fx_v3_madd_d_near(fx_vec3 a, fx_dir3 d, fx_t s)
+{
+    const int64_t h = (int64_t)1 << (FX_UBITS - 1);
+    return fx_v3(a.x + (fx_t)((fx_imul64(s, d.x) + h) >> FX_UBITS),
+                 a.y + (fx_t)((fx_imul64(s, d.y) + h) >> FX_UBITS),
+                 a.z + (fx_t)((fx_imul64(s, d.z) + h) >> FX_UBITS));
+}
+
 /* |d|^2 - 1 of a unit vector in Q32.32, rounded down: what rounding left
  * of its length (rt_ray.h). Each component within two ulps: far below
  * 2^31 for every FX_UBITS. */
