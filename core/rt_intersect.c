@@ -12,7 +12,8 @@
  */
 #include "rt_shape.h"
 
-/* Ulps (plus 2^-17 of the size) by which quads reach past their edges. */
+/* Q16.16 ulps (plus 2^-(FX_UBITS + 1) of the size) by which quads reach
+ * past their edges. */
 #define RT_QUAD_SLACK 2
 
 /* Cylinders and cones are solved in a frame centred on the bounding
@@ -35,12 +36,6 @@
 
 /* Half of a unit vector's last bit, for products rounded to Q16.16. */
 #define UHALF ((int64_t)1 << (FX_UBITS - 1))
-
-/* Closest approach of the ray to the bounding sphere (c, r). Returns 0 when
- * the ray misses it or meets it only outside (tmin, tmax); else *tca
- * (Q16.16, may exceed the fx_t range), *disc = r^2 - |h|^2 (Q32.32, the
- * squared half chord) and h = c - (o + tca d). Cheap rejections come first:
- * most tests end at the first comparison. */
 
 /* Near a bounding sphere's silhouette, whether |h| < r is decided by the
  * Q16.16 rounding of h (about an ulp per component), that is, by up to
@@ -75,7 +70,13 @@ RT_NOINLINE static int bsphere_fine(const fx_vec3 *c, int64_t t,
     return 1;
 }
 
-/* small: the object's centre and radius are fx_v3_small (rt_object.small).
+/* Closest approach of the ray to the bounding sphere (c, r). Returns 0 when
+ * the ray misses it or meets it only outside (tmin, tmax); else *tca
+ * (Q16.16, may exceed the fx_t range), *disc = r^2 - |h|^2 (Q32.32, the
+ * squared half chord) and h = c - (o + tca d). Cheap rejections come first:
+ * most tests end at the first comparison (bsphere_fine decides the rays
+ * that pass within rounding of the silhouette).
+ * small: the object's centre and radius are fx_v3_small (rt_object.small).
  * Inlined into each shape's test: the call and its nine arguments cost
  * more than the common rejection itself. */
 RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
