@@ -391,6 +391,12 @@ static int hit_box(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
 }
 
 
+/* Bit length of v (0 for 0). */
+static int rt_bitlen64_i(uint64_t v)
+{
+    return v ? 64 - fx_clz64(v) : 0;
+}
+
 /* v 2^-n: rounded to nearest for n > 0, exact for n <= 0 (the callers
  * keep v 2^-n within 64 bits). */
 static int64_t shift_round(int64_t v, int n)
@@ -430,8 +436,9 @@ static int64_t frame_div(int64_t n, int64_t d)
  * a cone's apex. `real`: the roots are known to be real (a ray steeper
  * than a cone's side meets both nappes), so any negative discriminant is
  * rounding. */
-static int quadratic(int64_t a, int64_t b, int64_t c, int real,
-                     int64_t root[2])
+RT_ALWAYS_INLINE static inline int quadratic(int64_t a, int64_t b,
+                                             int64_t c, int real,
+                                             int64_t root[2])
 {
     /* A common scale brings the coefficients within 30 bits (only a
      * flat cone's need it); the roots do not change. */
@@ -475,6 +482,211 @@ static int quadratic(int64_t a, int64_t b, int64_t c, int real,
     return 2;
 }
 
+/* A cylinder's or cone's frame for one ray (hit_upright): the frame is
+ * centred on the bounding sphere and scaled by 2^-ushift, with
+ * RT_FRAME_BITS fraction bits; a frame value is a world raw value times
+ * 2^sf. */
+typedef struct {
+    int sf;
+    int32_t p[3];   /* the ray's point at tca, o + tca d - bc */
+    int32_t d[3];   /* its direction */
+    int32_t yb, yt; /* the base's and the top's (apex's) height */
+} upright_frame;
+
+/* Sets *f for object o and ray r, whose bounding-sphere tca is given. */
+RT_ALWAYS_INLINE static inline void frame_set(upright_frame *f,
+                                              const rt_object *o,
+                                              const rt_ray *r, int64_t tca)
+{
+    const int sf = RT_FRAME_BITS - 16 - o->ushift;
+    f->sf = sf;
+    /* The closest point p = o + tca d - bc in the frame, from the exact
+     * o - bc and tca d (not bsphere's rounded h). Frame values near the
+     * sphere are below 2^25: 32-bit operands. */
+    const int dsh = FX_UBITS - sf;
+    f->p[0] = (int32_t)(shift_round(tca * r->d.x, dsh) -
+                        shift_round((int64_t)o->bc.x - r->o.x, -sf));
+    f->p[1] = (int32_t)(shift_round(tca * r->d.y, dsh) -
+                        shift_round((int64_t)o->bc.y - r->o.y, -sf));
+    f->p[2] = (int32_t)(shift_round(tca * r->d.z, dsh) -
+                        shift_round((int64_t)o->bc.z - r->o.z, -sf));
+    /* The direction with RT_FRAME_BITS fraction bits. */
+    const int ush = FX_UBITS - RT_FRAME_BITS;
+    f->d[0] = (int32_t)shift_round(r->d.x, ush);
+    f->d[1] = (int32_t)shift_round(r->d.y, ush);
+    f->d[2] = (int32_t)shift_round(r->d.z, ush);
+    /* Base and top, exact from the object's fields (the centre bc.y is
+     * a.y + h/2 rounded down). */
+    f->yb = (int32_t)shift_round((int64_t)o->a.y - o->bc.y, -sf);
+    f->yt = (int32_t)shift_round((int64_t)o->a.y + o->h - o->bc.y, -sf);
+}
+
+/* A ray with a side root within this height of a cone's apex that passes
+ * within as much of the apex (2^-6 of the frame, as a frame value) is
+ * solved again about the apex (apex_side). */
+#define RT_APEX_NEAR ((int64_t)1 << (RT_FRAME_BITS - 6))
+
+/* A ray steeper than a cone's side by more than rounding (its a < 0):
+ * it meets each nappe once. */
+static int cone_steep(int64_t a)
+{
+    return a < -((int64_t)RT_STEEP_MIN_A << (RT_FRAME_BITS - 16));
+}
+
+/* Near a cone's apex the side's quadratic is ill-conditioned: its roots
+ * there split as the square root of the discriminant, whose rounding (an
+ * ulp of the frame) moves them by about 2^-12 of the frame, and decides
+ * whether a ray passing the apex meets the cone (a shadow ray towards a
+ * light at the apex passes it at up to EPS). If the ray of frame fr
+ * passes within RT_APEX_NEAR of the apex, apex_side solves the side again
+ * about the apex; else it returns -1 at once. The ray's point q nearest
+ * the apex is exact in 64 bits (world units with 16 + FX_UBITS fraction
+ * bits, from the ray's own integers), and the quadratic is formed in a
+ * frame 2^e times finer than the cone's, e as large as keeps q within
+ * 2^23 there: the same rounding then moves the roots 2^-e as much.
+ * Returns 1 with *best set for a side hit, 0 for none, or -1 also when a
+ * root leaves the fine frame's range (a ray within rounding of a
+ * generator's direction): then the caller's roots stand. */
+static int apex_side(const rt_object *o, const rt_ray *r, int64_t tca,
+                     const upright_frame *fr, fx_t tmin, fx_t *best)
+{
+    const upright_frame f = *fr;
+    const int32_t *d = f.d;
+    /* The ray's squared distance from the apex in the frame, |q|^2 -
+     * (q.d)^2 with q = p - apex (2 RT_FRAME_BITS fraction bits, far below
+     * 2^62); -q.d is the frame distance to its point nearest the apex. */
+    const int32_t qy0 = f.p[1] - f.yt;
+    const int64_t qd = frame_round(fx_imul64(f.p[0], d[0]) +
+                                   fx_imul64(qy0, d[1]) +
+                                   fx_imul64(f.p[2], d[2]));
+    if (fx_imul64(f.p[0], f.p[0]) + fx_imul64(qy0, qy0) +
+            fx_imul64(f.p[2], f.p[2]) - qd * qd >=
+        RT_APEX_NEAR * RT_APEX_NEAR)
+        return -1;
+    const int sf = f.sf;
+    const int64_t ta = tca + shift_round(-qd, sf); /* world, Q16.16 */
+    /* o - bc and ta d are each below 2^62 with FX_UBITS more fraction
+     * bits (|o - bc| < 2^32, |ta| < 2^32 raw), their sum is a point
+     * within the bounding sphere, and the apex lies within it too. */
+    const int64_t ay = (int64_t)o->a.y + o->h - o->bc.y;
+    const int64_t q46[3] = {
+        ((int64_t)r->o.x - o->bc.x) * FX_UONE + ta * r->d.x,
+        ((int64_t)r->o.y - o->bc.y) * FX_UONE + ta * r->d.y - ay * FX_UONE,
+        ((int64_t)r->o.z - o->bc.z) * FX_UONE + ta * r->d.z,
+    };
+    uint64_t m = 0;
+    for (int i = 0; i < 3; i++)
+        m |= (uint64_t)(q46[i] < 0 ? -q46[i] : q46[i]);
+    /* A fine value is q46 2^(sf + e - FX_UBITS); keep it below 2^23. */
+    int e = 23 + FX_UBITS - sf - rt_bitlen64_i(m);
+    e = e < 0 ? 0 : (e > 24 ? 24 : e);
+    const int n = FX_UBITS - sf - e;
+    const int32_t qx = (int32_t)shift_round(q46[0], n);
+    const int32_t qy = (int32_t)shift_round(q46[1], n);
+    const int32_t qz = (int32_t)shift_round(q46[2], n);
+    /* The cone's coefficients at q, as in hit_upright, with k (yt - y) =
+     * -k qy; a is the same at any scale. */
+    const int32_t kdy = (int32_t)frame_round(fx_imul64(o->k, d[1]));
+    const int64_t ky = frame_round(fx_imul64(o->k, -qy));
+    const int64_t a = frame_round(fx_imul64(d[0], d[0]) +
+                                  fx_imul64(d[2], d[2])) -
+                      frame_round(fx_imul64(kdy, kdy));
+    const int64_t b = frame_round(fx_imul64(qx, d[0]) + fx_imul64(qz, d[2])) +
+                      frame_round(ky * kdy);
+    const int64_t c =
+        frame_round(fx_imul64(qx, qx) + fx_imul64(qz, qz) - ky * ky);
+    const int steep = cone_steep(a);
+    int64_t root[2];
+    int nr = quadratic(a, b, c, steep, root);
+    if (steep && nr == 2) {
+        if ((d[1] > 0) != (root[0] < root[1]))
+            root[0] = root[1];
+        nr = 1;
+    }
+    const int64_t lim = (int64_t)1 << 32; /* frame_div's saturation */
+    for (int i = 0; i < nr; i++)
+        if (root[i] >= lim || root[i] <= -lim)
+            return -1;
+    /* The base plane (less the rim slack) in fine units below the apex. */
+    const int64_t base =
+        ((int64_t)f.yb - RT_RIM_SLACK - f.yt) * ((int64_t)1 << e);
+    for (int i = 0; i < nr; i++) {
+        const int64_t y = qy + frame_round(root[i] * d[1]);
+        if ((y > 0 && !steep) || y < base)
+            continue; /* the mirrored nappe, or below the base */
+        if (take(ta + shift_round(root[i], sf + e), tmin, best))
+            return 1;
+    }
+    return 0;
+}
+
+/* The caps of a cylinder or cone seen by the ray of frame f (discs at the
+ * base, bottom, and at the top, a cylinder's only) nearer than *best: 1
+ * with *best and *part (1 + cap) set for a hit. ur is the radius in the
+ * frame. */
+RT_ALWAYS_INLINE static inline int upright_caps(const rt_object *o,
+                                                const rt_ray *r, int64_t tca,
+                                                const upright_frame *f,
+                                                int32_t ur, fx_t tmin,
+                                                fx_t *best, uint8_t *part)
+{
+    const int sf = f->sf;
+    const int64_t rim = (int64_t)RT_RIM_SLACK << (sf > 0 ? sf : 0);
+    int found = 0;
+    if (r->d.y == 0)
+        return 0;
+    for (int cap = 0; cap < 2; cap++) {
+        if (!(o->caps & (cap ? RT_CAP_TOP : RT_CAP_BOTTOM)))
+            continue;
+        /* t in world units, as hit_quad computes it for a plane y =
+         * const: a cap in a floor quad's plane (a shape standing on the
+         * floor) gives the very same t, so the tie goes to the earlier
+         * object instead of flipping with rounding. */
+        int64_t cy = cap ? (int64_t)o->a.y + o->h : o->a.y;
+        int64_t tw = plane_t(cy, r->o.y, r->d.y);
+        if (tw <= tmin || tw >= *best)
+            continue; /* take() would refuse it */
+        if (tw - tca > o->br || tca - tw > o->br)
+            continue; /* outside the bounding sphere; keeps tl small */
+        const int64_t tl = shift_round(tw - tca, -sf);
+        const int64_t x = f->p[0] + frame_round(tl * f->d[0]);
+        const int64_t z = f->p[2] + frame_round(tl * f->d[2]);
+        /* The caps reach RT_RIM_SLACK world ulps (at least as many frame
+         * ulps) past the side's radius. */
+        if (x * x + z * z > fx_imul64(ur, ur) + ur * (2 * rim))
+            continue;
+        if (take(tw, tmin, best)) {
+            *part = (uint8_t)(1 + cap);
+            found = 1;
+        }
+    }
+    return found;
+}
+
+/* hit_upright's answer again for a cone whose side had a root near its
+ * apex: if the ray passes that near (apex_side), the side's hit is the
+ * solve about the apex, and the caps are tested again against it; else
+ * the answer found (with *t and *part) stands. */
+RT_COLD static int upright_apex(const rt_object *o, const rt_ray *r,
+                                int64_t tca, fx_t tmin, fx_t tmax, int found,
+                                fx_t *t, uint8_t *part)
+{
+    fx_t best = tmax;
+    uint8_t pt = 0;
+    upright_frame f;
+    frame_set(&f, o, r, tca);
+    int side = apex_side(o, r, tca, &f, tmin, &best);
+    if (side < 0)
+        return found;
+    const int32_t ur = (int32_t)shift_round(o->r, -f.sf);
+    found = upright_caps(o, r, tca, &f, ur, tmin, &best, &pt) | side;
+    if (found) {
+        *t = best;
+        *part = pt;
+    }
+    return found;
+}
+
 /* Cylinder (kind RT_CYLINDER) or cone, in the object's frame. */
 static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
                        fx_t tmax, fx_t *t, uint8_t *part)
@@ -483,35 +695,17 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
     uint64_t disc;
     fx_t best = tmax;
     int64_t root[2];
-    int found = 0, cone = o->kind == RT_CONE;
+    int found = 0, near = 0, cone = RT_HAS_CONE && o->kind == RT_CONE;
     if (!bsphere(&o->bc, o->br, o->small, r, tmin, tmax, &tca, &disc, h))
         return 0;
-    /* Frame value = world raw value 2^sf. */
-    const int sf = RT_FRAME_BITS - 16 - o->ushift;
-    /* The closest point p = o + tca d - bc in the frame, from the exact
-     * o - bc and tca d (not bsphere's rounded h). */
-    const int dsh = FX_UBITS - sf;
-    const int64_t px64 = shift_round(tca * r->d.x, dsh) -
-                         shift_round((int64_t)o->bc.x - r->o.x, -sf);
-    const int64_t py64 = shift_round(tca * r->d.y, dsh) -
-                         shift_round((int64_t)o->bc.y - r->o.y, -sf);
-    const int64_t pz64 = shift_round(tca * r->d.z, dsh) -
-                         shift_round((int64_t)o->bc.z - r->o.z, -sf);
-    /* Frame values near the sphere are below 2^25: 32-bit operands. */
-    const int32_t px = (int32_t)px64, py = (int32_t)py64, pz = (int32_t)pz64;
-    /* The direction with RT_FRAME_BITS fraction bits. */
-    const int ush = FX_UBITS - RT_FRAME_BITS;
-    const int32_t dx = (int32_t)shift_round(r->d.x, ush);
-    const int32_t dy = (int32_t)shift_round(r->d.y, ush);
-    const int32_t dz = (int32_t)shift_round(r->d.z, ush);
-    /* Radius, base and top in the frame, exact from the object's fields
-     * (the centre bc.y is a.y + h/2 rounded down). */
-    const int32_t ur = (int32_t)shift_round(o->r, -sf);
-    const int32_t yb = (int32_t)shift_round((int64_t)o->a.y - o->bc.y, -sf);
-    const int32_t yt =
-        (int32_t)shift_round((int64_t)o->a.y + o->h - o->bc.y, -sf);
+    upright_frame f;
+    frame_set(&f, o, r, tca);
+    const int32_t px = f.p[0], py = f.p[1], pz = f.p[2];
+    const int32_t dx = f.d[0], dy = f.d[1], dz = f.d[2];
+    const int32_t yb = f.yb, yt = f.yt;
+    /* The radius in the frame, exact. */
+    const int32_t ur = (int32_t)shift_round(o->r, -f.sf);
     const int64_t one = (int64_t)1 << RT_FRAME_BITS;
-    const int64_t rim = (int64_t)RT_RIM_SLACK << (sf > 0 ? sf : 0); /* caps */
 
     /* Side: x^2 + z^2 = R(y)^2, R = ur (cylinder) or k (yt - y) (cone). */
     const int64_t pp = fx_imul64(px, px) + fx_imul64(pz, pz);
@@ -529,8 +723,7 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
     }
     /* Clearly steeper than the side (not within rounding of a
      * generator's direction, where one root is far and saturates). */
-    const int steep =
-        cone && a < -((int64_t)RT_STEEP_MIN_A << (RT_FRAME_BITS - 16));
+    const int steep = cone && cone_steep(a);
     int n = quadratic(a, b, c, steep, root);
     if (steep && n == 2) {
         /* A ray steeper than the side meets each nappe once: the root
@@ -545,6 +738,11 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
         if (root[i] > 4 * one || root[i] < -4 * one)
             continue;
         int64_t y = py + frame_round(root[i] * dy);
+        /* A root near a cone's apex is as much rounding's as the ray's:
+         * the answer is then upright_apex's. (A ray within rounding of
+         * the apex always has a root there: quadratic() takes a
+         * discriminant within its rounding for a tangent's.) */
+        near |= cone && y > yt - RT_APEX_NEAR;
         /* The side reaches RT_RIM_SLACK frame ulps past each cap's
          * plane, as the caps reach past the side's radius below: the
          * two are rounded separately, and no ray may pass between. A
@@ -554,42 +752,17 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
             (y > yt + (cone ? 0 : RT_RIM_SLACK) && !steep))
             continue;
         /* World distance: tca + root 2^(ushift - (F - 16)). */
-        if (take(tca + shift_round(root[i],
-                                   RT_FRAME_BITS - 16 - o->ushift),
-                 tmin, &best)) {
+        if (take(tca + shift_round(root[i], f.sf), tmin, &best)) {
             *part = 0;
             found = 1;
             break;
         }
     }
-    /* Caps: discs at the base (bottom) and the top (cylinder only). */
-    if (r->d.y != 0) {
-        for (int cap = 0; cap < 2; cap++) {
-            if (!(o->caps & (cap ? RT_CAP_TOP : RT_CAP_BOTTOM)))
-                continue;
-            /* t in world units, as hit_quad computes it for a plane
-             * y = const: a cap in a floor quad's plane (a shape standing
-             * on the floor) gives the very same t, so the tie goes to the
-             * earlier object instead of flipping with rounding. */
-            int64_t cy = cap ? (int64_t)o->a.y + o->h : o->a.y;
-            int64_t tw = plane_t(cy, r->o.y, r->d.y);
-            if (tw <= tmin || tw >= best)
-                continue; /* take() would refuse it */
-            if (tw - tca > o->br || tca - tw > o->br)
-                continue; /* outside the bounding sphere; keeps tl small */
-            const int64_t tl = shift_round(tw - tca, -sf);
-            const int64_t x = px + frame_round(tl * dx);
-            const int64_t z = pz + frame_round(tl * dz);
-            if (x * x + z * z > fx_imul64(ur, ur) + ur * (2 * rim))
-                continue;
-            if (take(tw, tmin, &best)) {
-                *part = (uint8_t)(1 + cap);
-                found = 1;
-            }
-        }
-    }
+    found |= upright_caps(o, r, tca, &f, ur, tmin, &best, part);
     if (found)
         *t = best;
+    if (near)
+        return upright_apex(o, r, tca, tmin, tmax, found, t, part);
     return found;
 }
 

@@ -203,7 +203,9 @@ double rnd(void);
     X(eye_look_60000_apart) \
     X(fov_near_180_wide) \
     X(flat_cone_grazing_rim) \
-    X(glass_ior_100_outer_ring)
+    X(glass_ior_100_outer_ring) \
+    X(light_at_cone_apex) \
+    X(lights_on_surfaces)
 
 #define STAB_DECLARE(n) void case_##n(void);
 STAB_CASES(STAB_DECLARE)
