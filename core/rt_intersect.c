@@ -219,10 +219,15 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
     if (den < RT_PAR_DOT && den > -RT_PAR_DOT)
         return 0;
     /* num = dist - o.n with 16 + FX_UBITS fraction bits (|num| < 2^63);
-     * den = d.n with 2 FX_UBITS. */
-    int64_t num = (int64_t)o->dist * FX_UONE -
-                  (flat ? fx_imul64(r->o.y, o->n.y)
-                        : fx_pd_dot_raw(r->o, o->n));
+     * den = d.n with 2 FX_UBITS. dist = n.a fits Q16.16 for a flat or a
+     * small quad (rt_object.small); a tilted one far from the scene's
+     * origin takes (a - o).n, exact at any distance. */
+    int64_t num;
+    if (flat || o->small)
+        num = (int64_t)o->dist * FX_UONE -
+              (flat ? fx_imul64(r->o.y, o->n.y) : fx_pd_dot_raw(r->o, o->n));
+    else
+        num = fx_pd_dot_diff_raw(o->a, r->o, o->n);
     if ((num < 0) != (den < 0))
         return 0;
     /* t = num 2^FX_UBITS / den in Q16.16, both of one sign, rounded: a

@@ -205,7 +205,8 @@ double rnd(void);
     X(flat_cone_grazing_rim) \
     X(glass_ior_100_outer_ring) \
     X(light_at_cone_apex) \
-    X(lights_on_surfaces)
+    X(lights_on_surfaces) \
+    X(far_tilted_quads)
 
 #define STAB_DECLARE(n) void case_##n(void);
 STAB_CASES(STAB_DECLARE)
