@@ -218,14 +218,20 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
     int64_t den = flat ? fx_imul64(r->d.y, o->n.y) : fx_d3_dot_raw(r->d, o->n);
     if (den < RT_PAR_DOT && den > -RT_PAR_DOT)
         return 0;
-    /* num = dist - o.n with 16 + FX_UBITS fraction bits (|num| < 2^63);
-     * den = d.n with 2 FX_UBITS. dist = n.a fits Q16.16 for a flat or a
-     * small quad (rt_object.small); a tilted one far from the scene's
-     * origin takes (a - o).n, exact at any distance. */
+    /* num = (a - o).n, the plane's distance from the origin, with 16 +
+     * FX_UBITS fraction bits (|num| < 2^63): exact, as a grazing ray
+     * needs it (a light on a tilted quad, seen nearly in its plane), and
+     * at any distance from the scene's origin (n.a may leave Q16.16). A
+     * flat quad's dist = n.a is exact; a small tilted quad and ray
+     * (rt_object.small) have a - o within 32 bits. den = d.n with 2
+     * FX_UBITS fraction bits. */
     int64_t num;
-    if (flat || o->small)
-        num = (int64_t)o->dist * FX_UONE -
-              (flat ? fx_imul64(r->o.y, o->n.y) : fx_pd_dot_raw(r->o, o->n));
+    if (flat)
+        num = (int64_t)o->dist * FX_UONE - fx_imul64(r->o.y, o->n.y);
+    else if (o->small && r->small)
+        num = fx_imul64(o->a.x - r->o.x, o->n.x) +
+              fx_imul64(o->a.y - r->o.y, o->n.y) +
+              fx_imul64(o->a.z - r->o.z, o->n.z);
     else
         num = fx_pd_dot_diff_raw(o->a, r->o, o->n);
     if ((num < 0) != (den < 0))

@@ -118,8 +118,8 @@ typedef struct {
     fx_dir3 n;        /* quad: unit normal, norm(edge1 x edge2) */
     fx_dir3 pu, pv;   /* quad: unit in-plane axes across edge2 and edge1 */
     fx_t lu, lv;      /* quad: 0 <= (p - a).pu <= lu, 0 <= (p - a).pv <= lv */
-    fx_t dist;        /* quad: n . a (saturated: only a flat or small quad
-                         uses it) */
+    fx_t dist;        /* quad: n . a, rounded and saturated: only a flat
+                         quad, whose dist is exact, uses it */
     fx_vec3 bc;       /* bounding sphere centre */
     fx_t br;          /* bounding sphere radius */
     int8_t ushift;    /* cylinders and cones are solved in the frame centred

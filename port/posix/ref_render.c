@@ -234,7 +234,9 @@ static vec shade(const ref_scene *rs, vec o, vec d, int depth, int obj,
     }
     colour = scale(mul(C, rs->ambient), diffuse * m->ka);
     for (i = 0; i < rs->n_lights; i++) {
-        vec toL = sub(rs->light_pos[i], P), Lc = rs->light_col[i];
+        /* Seen from P_out, where the shadow ray starts: it ends at the
+         * light, so a surface through the light never hides it. */
+        vec toL = sub(rs->light_pos[i], P_out), Lc = rs->light_col[i];
         double dist = len(toL), ndl, rv;
         vec L = norm(toL), R;
         ndl = dot(N, L);

@@ -118,10 +118,36 @@ static const char on_surface_fmt[] =
     "sphere center 0 0.6 -1 radius 0.6 material c\n"
     "quad corner 1.5 0 -2.5 edge1 1 1 0.5 edge2 1 0 -0.3 material c\n";
 
+/* A shelf (a small quad 0.6 above the floor), a tilted quad, a sphere and
+ * a cylinder, seen from the side so that the floor under the shelf shows;
+ * every coordinate is exact in binary. */
+static const char shelf_fmt[] =
+    "camera eye 2.5 2 -3 look 0 0.2 0 fov 50\n"
+    "background 0.2 0.3 0.4\n"
+    "light %s\n"
+    "light -4 6 -4 color 0.3 0.3 0.3\n"
+    "material floor color 0.9 0.9 0.9 specular 0\n"
+    "material c color 0.8 0.5 0.3 specular 0.4\n"
+    "quad corner -4 0 -4 edge1 0 0 8 edge2 8 0 0 material floor\n"
+    "quad corner -0.4 0.6 -0.4 edge1 0 0 0.8 edge2 0.8 0 0 material c\n"
+    "quad corner 0.75 0 0.5 edge1 0.25 1 0.25 edge2 0.5 0 -0.5 "
+    "material c\n"
+    "sphere center -1.25 0.5 0.75 radius 0.5 material c\n"
+    "cylinder base 1.5 0 -1.25 radius 0.25 height 1 material c\n";
+
 /* A light on each kind of surface in turn: a box's faces, edge and
  * corner, a cylinder's top cap, side and rims, a cone's apex, side and
- * base rim, the top and bottom of a sphere, the floor, and a tilted
- * quad. No speckles, and within 30 dB of the reference. */
+ * base rim, the top and bottom of a sphere, the floor and a tilted quad;
+ * then, at 160x120, lights on a shelf above the floor, on a tilted quad
+ * (exactly in its plane), on a sphere and on a cylinder. A light on a
+ * surface lights both sides of it and is hidden only by what lies
+ * between: a shadow ray starts EPS off its own surface, and as it aimed
+ * from the hit point it passed its light at up to EPS, so it met the
+ * light's own surface within rounding of t_max: salt and pepper under the
+ * shelf (5 outliers away from edges) and along the tilted quad's plane.
+ * Lights are now seen from where the shadow ray starts, so it ends at the
+ * light; a tilted quad's plane is exact. No speckles (none away from the
+ * reference's edges either), and within 30 dB of the reference. */
 void case_lights_on_surfaces(void)
 {
     static const char *const at[] = {
@@ -130,6 +156,11 @@ void case_lights_on_surfaces(void)
         "0 1.6 2.5",    "0 0.8 2.9",    "0.8 0 2.5",    "0 1.2 -1",
         "0 0 -1",       "1 0 0",        "2.5 0.5 -2.4", "1.5 0 -2.5",
     };
+    static const char *const on_shelf[] = {
+        "0 0.6 0",       "0.125 0.6 -0.125", "-0.25 0.6 0.25",
+        "1.125 0.75 0.5", "1.25 0.5 0.375",  "-1.25 0.5 0.25",
+        "-1.25 1 0.75",  "1.5 0.5 -1.5",     "1.5 1 -1.25",
+    };
     for (unsigned i = 0; i < sizeof at / sizeof at[0]; i++) {
         char text[2048], what[64];
         snprintf(text, sizeof text, on_surface_fmt, at[i]);
@@ -137,5 +168,13 @@ void case_lights_on_surfaces(void)
             return;
         snprintf(what, sizeof what, "light at %s", at[i]);
         expect_clean(&scene_a, (view){ 96, 72, 1, -1, 0 }, 30, what);
+    }
+    for (unsigned i = 0; i < sizeof on_shelf / sizeof on_shelf[0]; i++) {
+        char text[2048], what[64];
+        snprintf(text, sizeof text, shelf_fmt, on_shelf[i]);
+        if (!parse(text, &scene_a))
+            return;
+        snprintf(what, sizeof what, "shelf scene, light at %s", on_shelf[i]);
+        expect_clean(&scene_a, (view){ 160, 120, 1, -1, 0 }, 30, what);
     }
 }
