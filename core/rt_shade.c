@@ -20,6 +20,31 @@ RT_NOINLINE static rt_rgb trace(const rt_tracer *tr, rt_work *wk,
                                 const rt_ray *r, unsigned depth, fx_t w,
                                 unsigned skip, unsigned from);
 
+/* The shading normal of a bumped hit of material m on object o at p (the
+ * geometric normal ng facing the ray r): rt_bump's, unless the material
+ * reflects or transmits and that normal would send the mirror direction
+ * of r into the surface or the transmitted one back out of it (the wrong
+ * sign of its dot product with ng); then ng (docs/render-model.md). Such
+ * a ray would meet its own surface again within rounding of t_min. Out
+ * of line: inline, the test cost the shading loop's registers (33
+ * instructions per pixel of the seed, which has no bumped mirror). */
+RT_NOINLINE static fx_dir3 bumped_normal(const rt_material *m,
+                                         const rt_object *o, const rt_ray *r,
+                                         fx_vec3 p, fx_dir3 ng, int outside)
+{
+    const fx_dir3 n = rt_bump(m, o, p, ng);
+    fx_dir3 t;
+    if (!(m->reflect > 0 || m->transparency > 0))
+        return n;
+    if (fx_d3_dot_raw(rt_reflect_dir(r->d, n), ng) < 0)
+        return ng;
+    if (RT_HAS_REFRACTION && m->transparency > 0 &&
+        rt_refract_dir(r->d, n, outside ? m->ior_inv : m->ior, &t) &&
+        fx_d3_dot_raw(t, ng) > 0)
+        return ng;
+    return n;
+}
+
 /* Colour of the hit (object oi, part, distance t) seen along r. */
 static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
                     unsigned depth, fx_t w, uint16_t oi, uint8_t part, fx_t t)
@@ -36,7 +61,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
         ng = fx_d3_neg(ng); /* face the ray */
     fx_dir3 n = ng;
     if (RT_HAS_BUMP && m->bump != 0)
-        n = rt_bump(m, o, p, ng);
+        n = bumped_normal(m, o, r, p, ng, outside);
     unsigned tex = 0; /* which colour: m->color, or color2 */
     /* The texture is read just inside the surface: see render-model.md. */
     if (RT_HAS_TEXTURES && m->texture != RT_TEX_NONE)

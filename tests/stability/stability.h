@@ -206,7 +206,8 @@ double rnd(void);
     X(glass_ior_100_outer_ring) \
     X(light_at_cone_apex) \
     X(lights_on_surfaces) \
-    X(far_tilted_quads)
+    X(far_tilted_quads) \
+    X(bumped_glass_and_mirror)
 
 #define STAB_DECLARE(n) void case_##n(void);
 STAB_CASES(STAB_DECLARE)
