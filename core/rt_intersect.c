@@ -663,8 +663,14 @@ RT_ALWAYS_INLINE static inline int upright_caps(const rt_object *o,
         const int64_t x = f->p[0] + frame_round(tl * f->d[0]);
         const int64_t z = f->p[2] + frame_round(tl * f->d[2]);
         /* The caps reach RT_RIM_SLACK world ulps (at least as many frame
-         * ulps) past the side's radius. */
-        if (x * x + z * z > fx_imul64(ur, ur) + ur * (2 * rim))
+         * ulps) past the side's radius for a ray that meets them from
+         * outside, which the side might let through at the rim. A ray
+         * that meets a cap from inside the solid (up at the top, down at
+         * the bottom) crossed the side first if it passed outside the
+         * rim: no slack, or a ray passing just outside would see the
+         * cap's inner face. */
+        const int64_t slack = (cap ? r->d.y < 0 : r->d.y > 0) ? 2 * rim : 0;
+        if (x * x + z * z > fx_imul64(ur, ur) + ur * slack)
             continue;
         if (take(tw, tmin, best)) {
             *part = (uint8_t)(1 + cap);

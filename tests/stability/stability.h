@@ -207,7 +207,8 @@ double rnd(void);
     X(light_at_cone_apex) \
     X(lights_on_surfaces) \
     X(far_tilted_quads) \
-    X(bumped_glass_and_mirror)
+    X(bumped_glass_and_mirror) \
+    X(rim_caps_from_outside)
 
 #define STAB_DECLARE(n) void case_##n(void);
 STAB_CASES(STAB_DECLARE)
