@@ -532,10 +532,11 @@ RT_ALWAYS_INLINE static inline void frame_set(upright_frame *f,
     f->yt = (int32_t)shift_round((int64_t)o->a.y + o->h - o->bc.y, -sf);
 }
 
-/* A ray with a side root within this height of a cone's apex that passes
- * within as much of the apex (2^-6 of the frame, as a frame value) is
- * solved again about the apex (apex_side). */
-#define RT_APEX_NEAR ((int64_t)1 << (RT_FRAME_BITS - 6))
+/* A cone's side root where its radius k (yt - y) is below this (2^-6 of
+ * the frame, as a frame value), near the apex or anywhere on a needle, is
+ * solved again in a finer frame (thin_side); rt_object.rinv holds the
+ * height below the apex where that is. */
+#define RT_THIN_SIDE ((int64_t)1 << (RT_FRAME_BITS - 6))
 
 /* A ray steeper than a cone's side by more than rounding (its a < 0):
  * it meets each nappe once. */
@@ -544,68 +545,73 @@ static int cone_steep(int64_t a)
     return a < -((int64_t)RT_STEEP_MIN_A << (RT_FRAME_BITS - 16));
 }
 
-/* Near a cone's apex the side's quadratic is ill-conditioned: its roots
- * there split as the square root of the discriminant, whose rounding (an
- * ulp of the frame) moves them by about 2^-12 of the frame, and decides
- * whether a ray passing the apex meets the cone (a shadow ray towards a
- * light at the apex passes it at up to EPS). If the ray of frame fr
- * passes within RT_APEX_NEAR of the apex, apex_side solves the side again
- * about the apex; else it returns -1 at once. The ray's point q nearest
- * the apex is exact in 64 bits (world units with 16 + FX_UBITS fraction
- * bits, from the ray's own integers), and the quadratic is formed in a
- * frame 2^e times finer than the cone's, e as large as keeps q within
- * 2^23 there: the same rounding then moves the roots 2^-e as much.
- * Returns 1 with *best set for a side hit, 0 for none, or -1 also when a
- * root leaves the fine frame's range (a ray within rounding of a
- * generator's direction): then the caller's roots stand. */
-static int apex_side(const rt_object *o, const rt_ray *r, int64_t tca,
-                     const upright_frame *fr, fx_t tmin, fx_t *best)
+/* Where a cone is thin, near its apex or along a needle, the side's
+ * quadratic formed at the ray's point nearest the bounding sphere's
+ * centre is ill-conditioned: the roots there split as the square root of
+ * the discriminant, whose rounding (an ulp of the frame, for coefficients
+ * far larger than the radius there) moves them by about 2^-12 of the
+ * frame, and decides whether a ray passing the apex, or grazing a needle,
+ * meets the cone: a shadow ray towards a light at the apex or on a
+ * needle's rim passes it at up to EPS. thin_side solves the side again
+ * about the ray's point at frame distance s0 from tca (a root of the
+ * first solve): from that point, exact in 64 bits (world units with 16 +
+ * FX_UBITS fraction bits, from the ray's own integers), it takes x, z and
+ * the radius w = k (yt - y) there, all small, in a frame 2^e times finer
+ * than the cone's, e as large as keeps them within 2^23: the rounding then
+ * moves the roots 2^-e as much. Returns 1 with *best set for a side hit, 0
+ * for none, or -1 when that point is not thin after all or a root leaves
+ * the fine frame's range (a ray within rounding of a generator's
+ * direction): then the first solve's roots stand. */
+static int thin_side(const rt_object *o, const rt_ray *r, int64_t tca,
+                     const upright_frame *fr, int64_t s0, fx_t tmin,
+                     fx_t *best)
 {
     const upright_frame f = *fr;
     const int32_t *d = f.d;
-    /* The ray's squared distance from the apex in the frame, |q|^2 -
-     * (q.d)^2 with q = p - apex (2 RT_FRAME_BITS fraction bits, far below
-     * 2^62); -q.d is the frame distance to its point nearest the apex. */
-    const int32_t qy0 = f.p[1] - f.yt;
-    const int64_t qd = frame_round(fx_imul64(f.p[0], d[0]) +
-                                   fx_imul64(qy0, d[1]) +
-                                   fx_imul64(f.p[2], d[2]));
-    if (fx_imul64(f.p[0], f.p[0]) + fx_imul64(qy0, qy0) +
-            fx_imul64(f.p[2], f.p[2]) - qd * qd >=
-        RT_APEX_NEAR * RT_APEX_NEAR)
-        return -1;
     const int sf = f.sf;
-    const int64_t ta = tca + shift_round(-qd, sf); /* world, Q16.16 */
+    const int64_t ta = tca + shift_round(s0, sf); /* world, Q16.16 */
     /* o - bc and ta d are each below 2^62 with FX_UBITS more fraction
-     * bits (|o - bc| < 2^32, |ta| < 2^32 raw), their sum is a point
-     * within the bounding sphere, and the apex lies within it too. */
+     * bits (|o - bc| < 2^32, |ta| < 2^32 raw), and their sum is a point
+     * within the bounding sphere: x and z from the axis, and y46 the
+     * height below the apex. */
     const int64_t ay = (int64_t)o->a.y + o->h - o->bc.y;
-    const int64_t q46[3] = {
-        ((int64_t)r->o.x - o->bc.x) * FX_UONE + ta * r->d.x,
-        ((int64_t)r->o.y - o->bc.y) * FX_UONE + ta * r->d.y - ay * FX_UONE,
-        ((int64_t)r->o.z - o->bc.z) * FX_UONE + ta * r->d.z,
-    };
+    const int64_t x46 = ((int64_t)r->o.x - o->bc.x) * FX_UONE + ta * r->d.x;
+    const int64_t z46 = ((int64_t)r->o.z - o->bc.z) * FX_UONE + ta * r->d.z;
+    const int64_t y46 =
+        ay * FX_UONE - (((int64_t)r->o.y - o->bc.y) * FX_UONE + ta * r->d.y);
+    /* w46 = k y46, k with RT_FRAME_BITS fraction bits: y46 split so that
+     * neither product overflows (k < 2^30). */
+    const int64_t yh = y46 >> RT_FRAME_BITS;
+    const int64_t yl = y46 - yh * ((int64_t)1 << RT_FRAME_BITS);
+    if (yh > (INT64_MAX >> 31) || yh < -(INT64_MAX >> 31))
+        return -1;
+    const int64_t w46 = o->k * yh + ((o->k * yl) >> RT_FRAME_BITS);
     uint64_t m = 0;
-    for (int i = 0; i < 3; i++)
-        m |= (uint64_t)(q46[i] < 0 ? -q46[i] : q46[i]);
-    /* A fine value is q46 2^(sf + e - FX_UBITS); keep it below 2^23. */
+    m |= (uint64_t)(x46 < 0 ? -x46 : x46);
+    m |= (uint64_t)(z46 < 0 ? -z46 : z46);
+    m |= (uint64_t)(w46 < 0 ? -w46 : w46);
+    /* A frame value is a 46-bit world value times 2^(sf - FX_UBITS); the
+     * fine frame's 2^e more. Not thin after all: the first solve stands. */
+    const int64_t fm = shift_round((int64_t)m, FX_UBITS - sf);
+    if (fm >= 2 * RT_THIN_SIDE)
+        return -1;
     int e = 23 + FX_UBITS - sf - rt_bitlen64_i(m);
     e = e < 0 ? 0 : (e > 24 ? 24 : e);
     const int n = FX_UBITS - sf - e;
-    const int32_t qx = (int32_t)shift_round(q46[0], n);
-    const int32_t qy = (int32_t)shift_round(q46[1], n);
-    const int32_t qz = (int32_t)shift_round(q46[2], n);
-    /* The cone's coefficients at q, as in hit_upright, with k (yt - y) =
-     * -k qy; a is the same at any scale. */
+    const int32_t qx = (int32_t)shift_round(x46, n);
+    const int32_t qz = (int32_t)shift_round(z46, n);
+    const int64_t qw = shift_round(w46, n);
+    const int64_t qy = shift_round(y46, n); /* height below the apex */
+    /* The cone's coefficients there, as in hit_upright; a is the same at
+     * any scale. */
     const int32_t kdy = (int32_t)frame_round(fx_imul64(o->k, d[1]));
-    const int64_t ky = frame_round(fx_imul64(o->k, -qy));
     const int64_t a = frame_round(fx_imul64(d[0], d[0]) +
                                   fx_imul64(d[2], d[2])) -
                       frame_round(fx_imul64(kdy, kdy));
     const int64_t b = frame_round(fx_imul64(qx, d[0]) + fx_imul64(qz, d[2])) +
-                      frame_round(ky * kdy);
+                      frame_round(qw * kdy);
     const int64_t c =
-        frame_round(fx_imul64(qx, qx) + fx_imul64(qz, qz) - ky * ky);
+        frame_round(fx_imul64(qx, qx) + fx_imul64(qz, qz) - qw * qw);
     const int steep = cone_steep(a);
     int64_t root[2];
     int nr = quadratic(a, b, c, steep, root);
@@ -618,12 +624,12 @@ static int apex_side(const rt_object *o, const rt_ray *r, int64_t tca,
     for (int i = 0; i < nr; i++)
         if (root[i] >= lim || root[i] <= -lim)
             return -1;
-    /* The base plane (less the rim slack) in fine units below the apex. */
+    /* The base plane (with the rim slack) in fine units below the apex. */
     const int64_t base =
-        ((int64_t)f.yb - RT_RIM_SLACK - f.yt) * ((int64_t)1 << e);
+        ((int64_t)f.yt - f.yb + RT_RIM_SLACK) * ((int64_t)1 << e);
     for (int i = 0; i < nr; i++) {
-        const int64_t y = qy + frame_round(root[i] * d[1]);
-        if ((y > 0 && !steep) || y < base)
+        const int64_t y = qy - frame_round(root[i] * d[1]);
+        if ((y < 0 && !steep) || y > base)
             continue; /* the mirrored nappe, or below the base */
         if (take(ta + shift_round(root[i], sf + e), tmin, best))
             return 1;
@@ -680,19 +686,19 @@ RT_ALWAYS_INLINE static inline int upright_caps(const rt_object *o,
     return found;
 }
 
-/* hit_upright's answer again for a cone whose side had a root near its
- * apex: if the ray passes that near (apex_side), the side's hit is the
- * solve about the apex, and the caps are tested again against it; else
- * the answer found (with *t and *part) stands. */
-RT_COLD static int upright_apex(const rt_object *o, const rt_ray *r,
-                                int64_t tca, fx_t tmin, fx_t tmax, int found,
-                                fx_t *t, uint8_t *part)
+/* hit_upright's answer again for a cone whose side had a root s0 where
+ * the cone is thin: the side's hit is thin_side's, and the caps are
+ * tested again against it; or, if thin_side declines, the answer found
+ * (with *t and *part) stands. */
+RT_COLD static int upright_thin(const rt_object *o, const rt_ray *r,
+                                int64_t tca, int64_t s0, fx_t tmin,
+                                fx_t tmax, int found, fx_t *t, uint8_t *part)
 {
     fx_t best = tmax;
     uint8_t pt = 0;
     upright_frame f;
     frame_set(&f, o, r, tca);
-    int side = apex_side(o, r, tca, &f, tmin, &best);
+    int side = thin_side(o, r, tca, &f, s0, tmin, &best);
     if (side < 0)
         return found;
     const int32_t ur = (int32_t)shift_round(o->r, -f.sf);
@@ -712,7 +718,7 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
     uint64_t disc;
     fx_t best = tmax;
     int64_t root[2];
-    int found = 0, near = 0, cone = RT_HAS_CONE && o->kind == RT_CONE;
+    int found = 0, cone = RT_HAS_CONE && o->kind == RT_CONE;
     if (!bsphere(&o->bc, o->br, o->small, r, tmin, tmax, &tca, &disc, h))
         return 0;
     upright_frame f;
@@ -755,11 +761,6 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
         if (root[i] > 4 * one || root[i] < -4 * one)
             continue;
         int64_t y = py + frame_round(root[i] * dy);
-        /* A root near a cone's apex is as much rounding's as the ray's:
-         * the answer is then upright_apex's. (A ray within rounding of
-         * the apex always has a root there: quadratic() takes a
-         * discriminant within its rounding for a tangent's.) */
-        near |= cone && y > yt - RT_APEX_NEAR;
         /* The side reaches RT_RIM_SLACK frame ulps past each cap's
          * plane, as the caps reach past the side's radius below: the
          * two are rounded separately, and no ray may pass between. A
@@ -778,8 +779,15 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
     found |= upright_caps(o, r, tca, &f, ur, tmin, &best, part);
     if (found)
         *t = best;
-    if (near)
-        return upright_apex(o, r, tca, tmin, tmax, found, t, part);
+    /* A side root where a cone is thin (near its apex, or on a needle) is
+     * as much rounding's as the ray's: the answer is then upright_thin's.
+     * (A ray within rounding of the cone there has a root: quadratic()
+     * takes a discriminant within its rounding for a tangent's.) */
+    for (int i = 0; cone && i < n; i++)
+        if (root[i] <= 4 * one && root[i] >= -4 * one &&
+            py + frame_round(root[i] * dy) > yt - (int64_t)o->rinv)
+            return upright_thin(o, r, tca, root[i], tmin, tmax, found, t,
+                                part);
     return found;
 }
 

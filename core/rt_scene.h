@@ -126,7 +126,10 @@ typedef struct {
                          on bc and scaled by 2^-ushift (exact), which brings
                          br into (1/2, 1] */
     uint32_t rinv;    /* sphere: (2^(31 + b) - 1) / r, b the bit length of
-                         r: the normal is (p - a) rinv / 2^(b + 1) */
+                         r: the normal is (p - a) rinv / 2^(b + 1); cone:
+                         the height below its apex within which its radius
+                         is below 2^-6 of its frame, with RT_FRAME_BITS
+                         fraction bits (2^42 / k, at most 2^32 - 1) */
     fx_t k;           /* cone: slope r / h with RT_FRAME_BITS fraction bits
                          (not Q16.16) */
 } rt_object;

@@ -208,7 +208,8 @@ double rnd(void);
     X(lights_on_surfaces) \
     X(far_tilted_quads) \
     X(bumped_glass_and_mirror) \
-    X(rim_caps_from_outside)
+    X(rim_caps_from_outside) \
+    X(needle_cone_grazing)
 
 #define STAB_DECLARE(n) void case_##n(void);
 STAB_CASES(STAB_DECLARE)
