@@ -94,6 +94,15 @@ static inline int64_t fx_pd_dot_raw(fx_vec3 p, fx_dir3 d)
     return fx_imul64(p.x, d.x) + fx_imul64(p.y, d.y) + fx_imul64(p.z, d.z);
 }
 
+/* (a - b).d exact, with 16 + FX_UBITS fraction bits, for any Q16.16 a and
+ * b and unit d: each |a - b| component is below 2^32, so each product is
+ * below 2^62 and every partial sum is bounded by |a - b| |d| < 2^63. */
+static inline int64_t fx_pd_dot_diff_raw(fx_vec3 a, fx_vec3 b, fx_dir3 d)
+{
+    return ((int64_t)a.x - b.x) * d.x + ((int64_t)a.y - b.y) * d.y +
+           ((int64_t)a.z - b.z) * d.z;
+}
+
 /* p.d in Q16.16, rounded to nearest (ties up); saturates. */
 static inline fx_t fx_pd_dot(fx_vec3 p, fx_dir3 d)
 {

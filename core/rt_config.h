@@ -257,9 +257,12 @@
 #if defined(__GNUC__)
 #define RT_ALWAYS_INLINE __attribute__((always_inline))
 #define RT_NOINLINE __attribute__((noinline))
+/* A rare path: out of line, and compiled for size rather than speed. */
+#define RT_COLD __attribute__((noinline, cold))
 #else
 #define RT_ALWAYS_INLINE
 #define RT_NOINLINE
+#define RT_COLD
 #endif
 
 /* ---- Checks -------------------------------------------------------------- */

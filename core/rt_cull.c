@@ -56,7 +56,9 @@ static void cull_obj_set(cull_obj *k, const rt_object *o, const rt_scene *s,
     if (o->kind == RT_QUAD) {
         /* The eye's side of the plane; a hit needs d.n of the other sign.
          * Too close to the plane to tell: no plane culling. */
-        fx_t num = fx_sub(o->dist, fx_pd_dot(s->cam.eye, o->n));
+        const int64_t raw = fx_pd_dot_diff_raw(o->a, s->cam.eye, o->n);
+        fx_t num = fx_sat64((raw + ((int64_t)1 << (FX_UBITS - 1))) >>
+                            FX_UBITS);
         if (num > 256 || num < -256) {
             k->side = num > 0 ? 1 : -1;
             k->pa = fx_d3_dot(cf->w, o->n);

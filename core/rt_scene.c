@@ -153,6 +153,13 @@ static rt_status prepare_shape(rt_object *o)
         o->k = (fx_t)fx_udiv64_32(((uint64_t)(uint32_t)o->r << RT_FRAME_BITS) +
                                       (uint32_t)o->h / 2,
                                   (uint32_t)o->h);
+        /* Where the cone is thin (rt_intersect.c, thin_side): 2^-6 of
+         * the frame over k, both with RT_FRAME_BITS fraction bits. */
+        {
+            const uint64_t th = ((uint64_t)1 << (2 * RT_FRAME_BITS - 6)) /
+                                (uint32_t)o->k;
+            o->rinv = th > UINT32_MAX ? UINT32_MAX : (uint32_t)th;
+        }
         return upright_bounds(o);
     default:
         return RT_ERR_ARG;

@@ -118,14 +118,18 @@ typedef struct {
     fx_dir3 n;        /* quad: unit normal, norm(edge1 x edge2) */
     fx_dir3 pu, pv;   /* quad: unit in-plane axes across edge2 and edge1 */
     fx_t lu, lv;      /* quad: 0 <= (p - a).pu <= lu, 0 <= (p - a).pv <= lv */
-    fx_t dist;        /* quad: n . a */
+    fx_t dist;        /* quad: n . a, rounded and saturated: only a flat
+                         quad, whose dist is exact, uses it */
     fx_vec3 bc;       /* bounding sphere centre */
     fx_t br;          /* bounding sphere radius */
     int8_t ushift;    /* cylinders and cones are solved in the frame centred
                          on bc and scaled by 2^-ushift (exact), which brings
                          br into (1/2, 1] */
     uint32_t rinv;    /* sphere: (2^(31 + b) - 1) / r, b the bit length of
-                         r: the normal is (p - a) rinv / 2^(b + 1) */
+                         r: the normal is (p - a) rinv / 2^(b + 1); cone:
+                         the height below its apex within which its radius
+                         is below 2^-6 of its frame, with RT_FRAME_BITS
+                         fraction bits (2^42 / k, at most 2^32 - 1) */
     fx_t k;           /* cone: slope r / h with RT_FRAME_BITS fraction bits
                          (not Q16.16) */
 } rt_object;

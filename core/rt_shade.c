@@ -19,8 +19,34 @@
 #include "rt_specular.h"
 #include "rt_texture.h"
 
-static rt_rgb trace(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
-                    unsigned depth, fx_t w, unsigned skip, unsigned from);
+RT_NOINLINE static rt_rgb trace(const rt_tracer *tr, rt_work *wk,
+                                const rt_ray *r, unsigned depth, fx_t w,
+                                unsigned skip, unsigned from);
+
+/* The shading normal of a bumped hit of material m on object o at p (the
+ * geometric normal ng facing the ray r): rt_bump's, unless the material
+ * reflects or transmits and that normal would send the mirror direction
+ * of r into the surface or the transmitted one back out of it (the wrong
+ * sign of its dot product with ng); then ng (docs/render-model.md). Such
+ * a ray would meet its own surface again within rounding of t_min. Out
+ * of line: inline, the test cost the shading loop's registers (33
+ * instructions per pixel of the seed, which has no bumped mirror). */
+RT_NOINLINE static fx_dir3 bumped_normal(const rt_material *m,
+                                         const rt_object *o, const rt_ray *r,
+                                         fx_vec3 p, fx_dir3 ng, int outside)
+{
+    const fx_dir3 n = rt_bump(m, o, p, ng);
+    fx_dir3 t;
+    if (!(m->reflect > 0 || m->transparency > 0))
+        return n;
+    if (fx_d3_dot_raw(rt_reflect_dir(r->d, n), ng) < 0)
+        return ng;
+    if (RT_HAS_REFRACTION && m->transparency > 0 &&
+        rt_refract_dir(r->d, n, outside ? m->ior_inv : m->ior, &t) &&
+        fx_d3_dot_raw(t, ng) > 0)
+        return ng;
+    return n;
+}
 
 /* Colour of the hit (object oi, part, distance t) seen along r. */
 static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
@@ -41,7 +67,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
         ng = fx_d3_neg(ng); /* face the ray */
     fx_dir3 n = ng;
     if (RT_HAS_BUMP && m->bump != 0)
-        n = rt_bump(m, o, p, ng);
+        n = bumped_normal(m, o, r, p, ng, outside);
     unsigned tex = 0; /* which colour: m->color, or color2 */
     /* The texture is read just inside the surface: see render-model.md. */
     if (RT_HAS_TEXTURES && m->texture != RT_TEX_NONE)
@@ -59,16 +85,20 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
         RT_HAS_MULTILIGHT ? s->n_lights : (s->n_lights ? 1u : 0u);
     /* Inside a closed object every light outside it is hidden. */
     const int dark = !outside && rt_sealed_dark(&tr->sealed, oi);
+    /* Lights are seen from P_out, where their shadow rays start: a shadow
+     * ray then ends at its light, and a surface through the light (a
+     * light on a surface) is met only there, beyond t_max. */
+    if (!dark && n_lights > 0)
+        rt_out_point(&p_out, &have_out, ng, off);
     for (unsigned li = 0; !dark && li < n_lights; li++) {
         const rt_light *l = &s->light[li];
-        fx_vec3 lv = fx_v3_sub(l->pos, p);
+        fx_vec3 lv = fx_v3_sub(l->pos, p_out);
         fx_dir3 ld = fx_d3_normalize(lv);
         fx_t ndl = fx_d3_dot(n, ld);
         if (ndl <= 0)
             continue;
         if (RT_HAS_SHADOWS && (tr->feat & RT_FEAT_SHADOWS) &&
-            rt_in_shadow(tr, wk, li, lv, ld, &p_out, &have_out, ng, off,
-                         skip_out))
+            rt_in_shadow(tr, wk, li, lv, ld, p_out, skip_out))
             continue;
         rt_rgb lc =
             li == 0 ? tr->lit[o->material][tex] : rt_rgb_mul(base, l->color);
@@ -122,9 +152,11 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     return c;
 }
 
-/* rt_trace, which the compiler may fold into shade()'s recursion. */
-static rt_rgb trace(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
-                    unsigned depth, fx_t w, unsigned skip, unsigned from)
+/* rt_trace, out of line: folded into shade()'s recursion it made every
+ * level's frame larger (and the seed 0.7 % dearer on the Cortex-M3). */
+RT_NOINLINE static rt_rgb trace(const rt_tracer *tr, rt_work *wk,
+                                const rt_ray *r, unsigned depth, fx_t w,
+                                unsigned skip, unsigned from)
 {
     fx_t t;
     uint16_t oi = 0;

@@ -71,12 +71,11 @@ static inline int rt_occluded(const rt_tracer *tr, rt_work *wk,
     return 0;
 }
 
-/* 1 if light li is hidden from the hit point: a shadow ray from *p_out
- * (made on first use, rt_out_point) along unit ld, to the light at lv
- * from the hit, ignoring object skip. */
+/* 1 if light li is hidden from the hit point: a shadow ray from p_out
+ * (the hit point off its surface, rt_out_point) along unit ld, to the
+ * light at lv from p_out, ignoring object skip. */
 static inline int rt_in_shadow(const rt_tracer *tr, rt_work *wk, unsigned li,
-                               fx_vec3 lv, fx_dir3 ld, fx_vec3 *p_out,
-                               int *have_out, fx_dir3 ng, fx_t off,
+                               fx_vec3 lv, fx_dir3 ld, fx_vec3 p_out,
                                unsigned skip)
 {
     const uint32_t *cand = 0; /* every object */
@@ -87,8 +86,7 @@ static inline int rt_in_shadow(const rt_tracer *tr, rt_work *wk, unsigned li,
     if (!any)
         return 0;
     rt_ray sr;
-    rt_out_point(p_out, have_out, ng, off);
-    rt_ray_set(&sr, *p_out, ld);
+    rt_ray_set(&sr, p_out, ld);
     /* |lv| = lv . norm(lv): a dot product instead of a second square
      * root; its error (a few 2^-FX_UBITS of |lv|) only moves the far end
      * of the shadow ray, by far less than RT_EPS. */

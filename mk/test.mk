@@ -45,6 +45,14 @@ $(RANDSCENE): tests/randscene.c $(HOST_STAMP) | $(HOST_BUILD)/tests
 	@$(if $(Q),echo "  CC      $<")
 	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) $(HOST_LDFLAGS) $< -o $@ -lm
 
+# Its verdict on one scene's renders (speckles against the reference).
+RANDJUDGE := $(HOST_BUILD)/tests/randjudge
+$(RANDJUDGE): tests/randjudge.c $(HOST_PORT_OBJ) $(HOST_CORE_OBJ) \
+              | $(HOST_BUILD)/tests
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) -Iport/posix -Icore $(HOST_LDFLAGS) \
+	    $< $(HOST_PORT_OBJ) $(HOST_CORE_OBJ) -o $@ $(HOST_LIBS)
+
 # The POV-Ray translator of tests/suite_povray.sh: reads a scene with the
 # core's parser.
 SCENE2POV := $(HOST_BUILD)/tests/scene2pov
@@ -54,13 +62,13 @@ $(SCENE2POV): tests/scene2pov.c $(HOST_CORE_OBJ) | $(HOST_BUILD)/tests
 	    $(HOST_CORE_OBJ) -o $@ -lm
 
 .PHONY: test test-build test-quick random-test
-test-build: $(FIXTRACE) $(TEST_BIN) $(RANDSCENE) $(SCENE2POV)
+test-build: $(FIXTRACE) $(TEST_BIN) $(RANDSCENE) $(RANDJUDGE) $(SCENE2POV)
 
 # Many more random scenes than make test runs: make random-test
 # [RANDOM_FIRST=1] [RANDOM_COUNT=5000].
 RANDOM_FIRST ?= 1
 RANDOM_COUNT ?= 5000
-random-test: $(FIXTRACE) $(RANDSCENE)
+random-test: $(FIXTRACE) $(RANDSCENE) $(RANDJUDGE)
 	$(Q)HOST_BUILD=$(HOST_BUILD) bash tools/random_test.sh $(RANDOM_FIRST) \
 	    $(RANDOM_COUNT)
 

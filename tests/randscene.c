@@ -2,18 +2,30 @@
 /*
  * randscene: writes one random scene, in the scene language, to stdout.
  *
- *   randscene SEED [--size]
+ *   randscene SEED [--size | --jitter K]
  *
  * The same SEED gives the same scene on every host. Scenes cover the
  * parser's whole accepted range, as the randomized differential test
  * (tests/suite_random.sh) needs it: clusters anywhere up to +-30,000
  * units, scene scales from 1/100 to thousands of units, objects down to a
  * few ulp beside full-size ones, every primitive and cap variant, glass
- * up to ior 100, textures and bumps at odd and extreme scales down to a
- * few ulp, lights anywhere including on surfaces (a sphere's skin, a cone's
- * apex, a quad, a box face), fields of view from 1 to 179.99 degrees and
- * image shapes from 8:1 to 1:8. With --size it prints only "W H", the
- * image size the scene asks for, so a script can render it small.
+ * up to ior 100, textures and bumps at odd and extreme scales (on
+ * purpose textures down to 1 ulp, bumps to 64 ulps: docs/stability-cases.md
+ * says why), lights anywhere including on surfaces (a sphere's skin, a
+ * cone's apex, a quad, a box face), fields of view from 1 to 179.99
+ * degrees and image shapes from 8:1 to 1:8. With --size it prints only
+ * "W H", the image size the scene asks for, so a script can render it
+ * small. With --jitter K (1 to 6) it writes the same scene with the eye
+ * moved by 8 ulps along +x, -x, +y, -y, +z or -z: the documented
+ * tolerance of a ray near a silhouette, which tools/random_test.sh allows
+ * the core.
+ *
+ * Every object lies within 31,000 units of the eye: beyond the far plane
+ * (32,767) the core shows the background by design
+ * (docs/stability-cases.md, beyond_range_background), where the
+ * reference, unbounded, shows the object. When eye and look are far
+ * apart, the objects stand in front of the eye and the look point lies
+ * near the other end of the range.
  *
  * Host-only test tool: it uses double, which the core never does.
  */
@@ -67,10 +79,11 @@ static void num(double v)
     printf(" %.8f", v);
 }
 
-/* An edge or extent, kept inside the Q16.16 range. */
+/* An edge or extent, kept to 10,000 units: a cluster then reaches at most
+ * about 29,000 units from its centre. */
 static double clamp_len(double v)
 {
-    return v < -16000 ? -16000 : (v > 16000 ? 16000 : v);
+    return v < -10000 ? -10000 : (v > 10000 ? 10000 : v);
 }
 
 static void vec(double x, double y, double z)
@@ -96,6 +109,18 @@ static v3 rand_dir(void)
             return d;
         }
     }
+}
+
+/* How far from the cluster's centre the objects reach (as the
+ * generator bounds them). */
+static v3 centre;
+static double reach;
+
+static void extends(double x, double y, double z, double size)
+{
+    double dx = x - centre.x, dy = y - centre.y, dz = z - centre.z;
+    double r = sqrt(dx * dx + dy * dy + dz * dz) + size;
+    reach = r > reach ? r : reach;
 }
 
 /* A place a light may stand on: a point on some object's surface. */
@@ -124,11 +149,11 @@ static double size_of(double scale)
 
 /* A texture or bump feature size: odd fractions of the scale, now and
  * then extreme (one or two ulp, or far larger than the object). */
-static double feature_of(double scale)
+static double feature_of(double scale, int bump)
 {
     int r = below(12);
     if (r == 0)
-        return (1 + below(2)) / 65536.0;
+        return (bump ? 64 + below(192) : 1 + below(2)) / 65536.0;
     double v = r == 1 ? scale * uniform(5, 50)
                       : scale * log_uniform(0.02, 0.7) * 1.0137;
     v = v < 1 / 65536.0 ? 1 / 65536.0 : v;
@@ -170,12 +195,12 @@ static void material(int i, double scale)
         if (tex == 1)
             printf(" %c", "xyz"[below(3)]);
         vec(unit(), unit(), unit());
-        num(feature_of(scale));
+        num(feature_of(scale, 0));
     }
     if (chance(0.25)) {
         printf(" bump");
         num(uniform(0, 4));
-        num(feature_of(scale));
+        num(feature_of(scale, 1));
     }
     printf("\n");
 }
@@ -195,12 +220,13 @@ static void object(int n_mat, v3 c, double scale)
         num(r);
         v3 d = rand_dir();
         on_surface(p.x + r * d.x, p.y + r * d.y, p.z + r * d.z);
+        extends(p.x, p.y, p.z, r);
         break;
     }
     case 1: {
         double l = chance(0.3) ? scale * uniform(5, 20) : size_of(scale);
-        if (l > 16000)
-            l = 16000;
+        if (l > 10000)
+            l = 10000;
         v3 e1 = rand_dir(), e2 = rand_dir();
         double l2 = chance(0.5) ? l : size_of(scale);
         if (chance(0.4)) { /* a floor, edges along z and x */
@@ -220,6 +246,7 @@ static void object(int n_mat, v3 c, double scale)
         on_surface(p.x + 0.5 * (l * e1.x + l2 * e2.x),
                    p.y + 0.5 * (l * e1.y + l2 * e2.y),
                    p.z + 0.5 * (l * e1.z + l2 * e2.z));
+        extends(p.x, p.y, p.z, l + (l2 < 17321 ? l2 : 17321));
         break;
     }
     case 2: {
@@ -229,6 +256,7 @@ static void object(int n_mat, v3 c, double scale)
         printf(" max");
         vec(clamp_pos(p.x + sx), clamp_pos(p.y + sy), clamp_pos(p.z + sz));
         on_surface(p.x + sx / 2, p.y + sy, p.z + sz / 2);
+        extends(p.x, p.y, p.z, sx + sy + sz);
         break;
     }
     case 3: {
@@ -244,6 +272,7 @@ static void object(int n_mat, v3 c, double scale)
         printf("%s", caps[below(5)]);
         on_surface(p.x + r, p.y + h / 2, p.z);
         on_surface(p.x, p.y + h, p.z);
+        extends(p.x, p.y, p.z, r + h);
         break;
     }
     default: {
@@ -262,6 +291,7 @@ static void object(int n_mat, v3 c, double scale)
             printf(" open");
         on_surface(p.x, p.y + h, p.z); /* the apex */
         on_surface(p.x + r, p.y, p.z);
+        extends(p.x, p.y, p.z, r + h);
         break;
     }
     }
@@ -271,7 +301,7 @@ static void object(int n_mat, v3 c, double scale)
 int main(int argc, char **argv)
 {
     if (argc < 2) {
-        fprintf(stderr, "usage: randscene SEED [--size]\n");
+        fprintf(stderr, "usage: randscene SEED [--size | --jitter K]\n");
         return 2;
     }
     rng_state = strtoull(argv[1], NULL, 10) * 0x2545F4914F6CDD1Dull + 1;
@@ -283,6 +313,9 @@ int main(int argc, char **argv)
         printf("%d %d\n", wh[0], wh[1]);
         return 0;
     }
+    int jitter = 0;
+    if (argc > 3 && strcmp(argv[2], "--jitter") == 0)
+        jitter = atoi(argv[3]);
 
     /* Where the cluster stands and how large it is. */
     v3 c = { 0, 0, 0 };
@@ -299,7 +332,9 @@ int main(int argc, char **argv)
     printf("image %d %d depth %d\n", wh[0], wh[1], below(6));
 
     /* The camera: usually a few scales away; sometimes eye and look far
-     * apart (across the whole range); fov from 1 to 179.99 degrees. */
+     * apart (across the whole range), the objects then a few scales in
+     * front of the eye; fov from 1 to 179.99 degrees. It is written after
+     * the objects, when their reach is known. */
     v3 d = rand_dir();
     double dist = scale * uniform(2, 8);
     v3 eye = { clamp_pos(c.x + dist * d.x), clamp_pos(c.y + dist * d.y),
@@ -308,23 +343,17 @@ int main(int argc, char **argv)
     if (chance(0.08)) {
         eye.x = -30000 + uniform(0, 500);
         look.x = 30000 - uniform(0, 500);
+        double wx = look.x - eye.x, wy = look.y - eye.y, wz = look.z - eye.z;
+        double wl = sqrt(wx * wx + wy * wy + wz * wz);
+        c.x = eye.x + dist * wx / wl;
+        c.y = eye.y + dist * wy / wl;
+        c.z = eye.z + dist * wz / wl;
     }
     double fov;
     int f = below(10);
     fov = f == 0 ? uniform(1, 5) : (f == 1 ? uniform(170, 179.99)
                                            : uniform(20, 100));
-    printf("camera eye");
-    vec(eye.x, eye.y, eye.z);
-    printf(" look");
-    vec(look.x, look.y, look.z);
-    /* Keep up away from the view direction. */
-    double vx = look.x - eye.x, vy = look.y - eye.y, vz = look.z - eye.z;
-    double vl2 = vx * vx + vy * vy + vz * vz;
-    if (vy * vy > 0.8 * vl2)
-        printf(" up 1 0 0");
-    printf(" fov");
-    num(fov);
-    printf("\n");
+    centre = c;
     printf("background");
     vec(unit(), unit(), unit());
     printf("\n");
@@ -342,6 +371,38 @@ int main(int argc, char **argv)
     int n_obj = 1 + below(8);
     for (int i = 0; i < n_obj; i++)
         object(n_mat, c, scale);
+
+    /* Within the far plane: an eye too far for the objects' reach moves
+     * towards the cluster's centre. */
+    double ex = eye.x - c.x, ey = eye.y - c.y, ez = eye.z - c.z;
+    double el = sqrt(ex * ex + ey * ey + ez * ez);
+    if (el + reach > 31000 && el > 0) {
+        double k = (31000 - reach > 0 ? 31000 - reach : 0) / el;
+        eye.x = c.x + k * ex;
+        eye.y = c.y + k * ey;
+        eye.z = c.z + k * ez;
+    }
+    if (jitter >= 1 && jitter <= 6) {
+        double j = (jitter % 2 ? 8.0 : -8.0) / 65536;
+        if (jitter <= 2)
+            eye.x += j;
+        else if (jitter <= 4)
+            eye.y += j;
+        else
+            eye.z += j;
+    }
+    printf("camera eye");
+    vec(eye.x, eye.y, eye.z);
+    printf(" look");
+    vec(look.x, look.y, look.z);
+    /* Keep up away from the view direction. */
+    double vx = look.x - eye.x, vy = look.y - eye.y, vz = look.z - eye.z;
+    double vl2 = vx * vx + vy * vy + vz * vz;
+    if (vy * vy > 0.8 * vl2)
+        printf(" up 1 0 0");
+    printf(" fov");
+    num(fov);
+    printf("\n");
 
     int n_light = below(5);
     for (int i = 0; i < n_light; i++) {

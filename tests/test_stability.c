@@ -3,7 +3,8 @@
  * The numerical-stability suite: a table of named hard cases, each a tiny
  * scene or a direct call into the core, with its expected behaviour in the
  * comment above it, in tests/stability/ by topic (geometry.c, scenes.c,
- * effects.c; the helpers in helpers.c, the list of cases in stability.h).
+ * effects.c, textures.c, views.c, optics.c; the helpers in helpers.c, the
+ * list of cases in stability.h).
  * This file is the runner. Each case prints "PASS  name" or "FAIL  name";
  * a failed check also prints file:line. docs/stability-cases.md lists the
  * cases and the choices they document.

@@ -185,14 +185,15 @@ static void trace(fx_dir3 d, fx_t c[3])
     for (int k = 0; k < 3; k++)
         c[k] = fx_mul(base[k], KA);
 
-    fx_vec3 lv = fx_v3_sub(light, p);
+    /* The light is seen from p_out, where the shadow ray starts. */
+    fx_vec3 p_out = fx_v3_madd_d(p, n, EPS);
+    fx_vec3 lv = fx_v3_sub(light, p_out);
     fx_dir3 ld = fx_d3_normalize(lv);
     fx_t ndl = fx_d3_dot(n, ld);
     if (ndl <= 0)
         return;
     /* Hard shadow: any blocker between the surface and the light. A
      * convex object cannot shadow the outside of itself. */
-    fx_vec3 p_out = fx_v3_madd_d(p, n, EPS);
     fx_t tmax = fx_sub(fx_pd_dot(lv, ld), EPS); /* |lv| = lv . norm(lv) */
     const int32_t el = fx_d3_unit_err(ld);
     unsigned skip = outside ? oi : NONE;

@@ -205,6 +205,18 @@ static vec trace(const ref_scene *rs, vec o, vec d, int depth, int skip);
 
 static vec mirror(vec d, vec N) { return norm(madd(d, N, -2.0 * dot(d, N))); }
 
+/* Snell's law about N (eta, and N facing the ray): 1 and *t, or 0 for
+ * total internal reflection. */
+static int snell(vec d, vec N, double eta, vec *t)
+{
+    double cosi = -dot(d, N);
+    double k = 1.0 - eta * eta * (1.0 - cosi * cosi); /* Snell's law */
+    if (k < 0)
+        return 0;
+    *t = norm(madd(scale(d, eta), N, eta * cosi - sqrt(k)));
+    return 1;
+}
+
 /* The colour seen along d at hit `hit` on object `obj`. */
 static vec shade(const ref_scene *rs, vec o, vec d, int depth, int obj,
                  const ref_hit *hit)
@@ -231,10 +243,20 @@ static vec shade(const ref_scene *rs, vec o, vec d, int depth, int obj,
         vec u = scale(q, 1.0 / m->bump_scale);
         vec b = v3(ref_noise(1, u), ref_noise(2, u), ref_noise(3, u));
         N = norm(madd(Ng, b, m->bump));
+        /* Not a normal that sends a secondary ray through the surface. */
+        if (m->kr > 0 || m->kt > 0) {
+            double eta = outside ? 1.0 / m->ior : m->ior;
+            vec T;
+            if (dot(mirror(d, N), Ng) < 0 ||
+                (m->kt > 0 && snell(d, N, eta, &T) && dot(T, Ng) > 0))
+                N = Ng;
+        }
     }
     colour = scale(mul(C, rs->ambient), diffuse * m->ka);
     for (i = 0; i < rs->n_lights; i++) {
-        vec toL = sub(rs->light_pos[i], P), Lc = rs->light_col[i];
+        /* Seen from P_out, where the shadow ray starts: it ends at the
+         * light, so a surface through the light never hides it. */
+        vec toL = sub(rs->light_pos[i], P_out), Lc = rs->light_col[i];
         double dist = len(toL), ndl, rv;
         vec L = norm(toL), R;
         ndl = dot(N, L);
@@ -261,17 +283,13 @@ static vec shade(const ref_scene *rs, vec o, vec d, int depth, int obj,
     if (m->kt > 0) {
         /* N faces the ray either way, so eta flips with the side. */
         double eta = outside ? 1.0 / m->ior : m->ior;
-        double cosi = -dot(d, N);
-        double k = 1.0 - eta * eta * (1.0 - cosi * cosi); /* Snell's law */
-        vec t;
-        if (k < 0) { /* total internal reflection */
+        vec t, T;
+        if (!snell(d, N, eta, &T)) { /* total internal reflection */
             COUNT(reflection);
             t = trace(rs, P_out, mirror(d, N), depth + 1, skip_out);
         } else {
             COUNT(refraction);
-            t = trace(rs, P_in,
-                      norm(madd(scale(d, eta), N, eta * cosi - sqrt(k))),
-                      depth + 1, skip_in);
+            t = trace(rs, P_in, T, depth + 1, skip_in);
         }
         colour = madd(colour, t, m->kt);
     }

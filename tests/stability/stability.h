@@ -109,6 +109,8 @@ long count_colour(const ppm_image *m, uint8_t r, uint8_t g, uint8_t b);
 void dump(const char *tag, const ppm_image *m);
 void judge(const rt_scene *s, view vw, verdict *v, ppm_image *fx_out);
 void expect_close(const rt_scene *s, view vw, double min_psnr);
+void expect_clean(const rt_scene *s, view vw, double min_psnr,
+                  const char *what);
 rt_object obj(int kind, double ax, double ay, double az);
 rt_object sphere(double cx, double cy, double cz, double r);
 rt_object upright(int kind, double ax, double ay, double az, double r,
@@ -197,7 +199,17 @@ double rnd(void);
     X(seed_no_acne_320) \
     X(texture_cells_1ulp) \
     X(bump_lattice_1ulp) \
-    X(texture_size_below_1ulp)
+    X(texture_size_below_1ulp) \
+    X(eye_look_60000_apart) \
+    X(fov_near_180_wide) \
+    X(flat_cone_grazing_rim) \
+    X(glass_ior_100_outer_ring) \
+    X(light_at_cone_apex) \
+    X(lights_on_surfaces) \
+    X(far_tilted_quads) \
+    X(bumped_glass_and_mirror) \
+    X(rim_caps_from_outside) \
+    X(needle_cone_grazing)
 
 #define STAB_DECLARE(n) void case_##n(void);
 STAB_CASES(STAB_DECLARE)
