@@ -1,0 +1,419 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * rt_upright: cylinders and cones, solved in a frame of their own (see
+ * docs/numerics.md). Static functions for rt_intersect.c alone, which
+ * includes this after the bounding-sphere test (bsphere), plane_t and
+ * take that they share with the other shapes: one unit, so the compiler
+ * inlines them as it would in one file. Internal.
+ */
+#ifndef RT_UPRIGHT_H
+#define RT_UPRIGHT_H
+
+/* Cylinders and cones are solved in a frame centred on the bounding
+ * sphere and scaled by 2^-ushift, so that the sphere's radius is between
+ * 1/2 and 1 there, with RT_FRAME_BITS (rt_scene.h) fraction bits: a frame
+ * value is a world raw value times 2^(RT_FRAME_BITS - 16 - ushift). 24
+ * bits keep every product below 2^63 for cone slopes up to 64. */
+
+/* Frame ulps by which a cylinder's side reaches past its caps' planes,
+ * and world ulps (at least frame ulps) by which the caps reach past the
+ * side's radius: a cap's distance is a world value, so its point in the
+ * frame is known only to a world ulp. No ray passes between the two. */
+#define RT_RIM_SLACK 2
+
+/* Below these (2^-8, as frame values with 16 fraction bits; see
+ * RT_FRAME_BITS) a ray is within rounding of a cone's generator
+ * direction: no linear root, and not treated as steep. */
+#define RT_LINEAR_MIN_B ((int64_t)256 << (RT_FRAME_BITS - 16))
+#define RT_STEEP_MIN_A 256
+
+/* Bit length of v (0 for 0). */
+static int rt_bitlen64_i(uint64_t v)
+{
+    return v ? 64 - fx_clz64(v) : 0;
+}
+
+/* v 2^-n: rounded to nearest for n > 0, exact for n <= 0 (the callers
+ * keep v 2^-n within 64 bits). */
+static int64_t shift_round(int64_t v, int n)
+{
+    if (n <= 0)
+        return v * ((int64_t)1 << -n);
+    return (v + ((int64_t)1 << (n - 1))) >> n;
+}
+
+/* A product of two frame values back to RT_FRAME_BITS fraction bits,
+ * rounded to nearest. */
+static inline int64_t frame_round(int64_t v)
+{
+    return (v + ((int64_t)1 << (RT_FRAME_BITS - 1))) >> RT_FRAME_BITS;
+}
+
+/* n 2^RT_FRAME_BITS / d, truncated, for |n| < 2^31 and d != 0 (|d| <
+ * 2^31); a quotient of 2^32 or more (256 frame units, far outside the
+ * bounding sphere) comes back as +-2^32. */
+static int64_t frame_div(int64_t n, int64_t d)
+{
+    const int neg = (n < 0) != (d < 0);
+    const uint64_t un = (uint64_t)(n < 0 ? -n : n) << RT_FRAME_BITS;
+    const uint32_t ud = (uint32_t)(d < 0 ? -d : d);
+    int64_t q = (un >> 32) >= ud ? (int64_t)1 << 32
+                                 : (int64_t)fx_udiv64_32(un, ud);
+    return neg ? -q : q;
+}
+
+/* Roots of a t^2 + 2 b t + c = 0 (RT_FRAME_BITS fraction bits),
+ * cancellation-free: q = -(b + sign(b) sqrt(b^2 - ac)), roots q / a and
+ * c / q. Returns the count: one root when a = 0 (a ray along a cone's
+ * generator). a, b and c are each rounded to half an ulp, so b^2 - ac is
+ * known only to |b| + (|a| + |c|) / 2 (plus the rounding of the
+ * products): a discriminant negative by less is a double root (a
+ * tangent), not a miss; a wider tolerance would admit rays passing beside
+ * a cone's apex. `real`: the roots are known to be real (a ray steeper
+ * than a cone's side meets both nappes), so any negative discriminant is
+ * rounding. */
+RT_ALWAYS_INLINE static inline int quadratic(int64_t a, int64_t b,
+                                             int64_t c, int real,
+                                             int64_t root[2])
+{
+    /* A common scale brings the coefficients within 30 bits (only a
+     * flat cone's need it); the roots do not change. */
+    const uint64_t ua = (uint64_t)(a < 0 ? -a : a);
+    const uint64_t ub = (uint64_t)(b < 0 ? -b : b);
+    const uint64_t uc = (uint64_t)(c < 0 ? -c : c);
+    const uint64_t any = ua | ub | uc;
+    const int sh = any >> 30 ? 34 - fx_clz64(any) : 0;
+    int64_t lin_min = RT_LINEAR_MIN_B;
+    if (sh > 0) {
+        a = shift_round(a, sh);
+        b = shift_round(b, sh);
+        c = shift_round(c, sh);
+        lin_min >>= sh;
+    }
+    if (a == 0) {
+        /* One root, -c / 2b; b and c both shrink as the ray nears the
+         * generator itself, and their ratio becomes noise: none then. */
+        if (b > -lin_min && b < lin_min)
+            return 0;
+        root[0] = root[1] = frame_div(-c, 2 * b);
+        return 1;
+    }
+    int64_t disc = b * b - a * c; /* each product below 2^60 */
+    if (disc < 0) {
+        int64_t aa = a < 0 ? -a : a, ab = b < 0 ? -b : b;
+        int64_t ac = c < 0 ? -c : c;
+        if (!real && disc < -(ab + (aa + ac) / 2 + 1))
+            return 0;
+        disc = 0;
+    }
+    const int64_t sq = (int64_t)fx_isqrt64((uint64_t)disc);
+    const int64_t q = b >= 0 ? -(b + sq) : sq - b; /* |q| < 2^31 */
+    if (q == 0) {
+        root[0] = root[1] = 0;
+        return 1;
+    }
+    int64_t r0 = frame_div(q, a), r1 = frame_div(c, q);
+    root[0] = r0 < r1 ? r0 : r1;
+    root[1] = r0 < r1 ? r1 : r0;
+    return 2;
+}
+
+/* A cylinder's or cone's frame for one ray (hit_upright): the frame is
+ * centred on the bounding sphere and scaled by 2^-ushift, with
+ * RT_FRAME_BITS fraction bits; a frame value is a world raw value times
+ * 2^sf. */
+typedef struct {
+    int sf;
+    int32_t p[3];   /* the ray's point at tca, o + tca d - bc */
+    int32_t d[3];   /* its direction */
+    int32_t yb, yt; /* the base's and the top's (apex's) height */
+} upright_frame;
+
+/* Sets *f for object o and ray r, whose bounding-sphere tca is given. */
+RT_ALWAYS_INLINE static inline void frame_set(upright_frame *f,
+                                              const rt_object *o,
+                                              const rt_ray *r, int64_t tca)
+{
+    const int sf = RT_FRAME_BITS - 16 - o->ushift;
+    f->sf = sf;
+    /* The closest point p = o + tca d - bc in the frame, from the exact
+     * o - bc and tca d (not bsphere's rounded h). Frame values near the
+     * sphere are below 2^25: 32-bit operands. */
+    const int dsh = FX_UBITS - sf;
+    f->p[0] = (int32_t)(shift_round(tca * r->d.x, dsh) -
+                        shift_round((int64_t)o->bc.x - r->o.x, -sf));
+    f->p[1] = (int32_t)(shift_round(tca * r->d.y, dsh) -
+                        shift_round((int64_t)o->bc.y - r->o.y, -sf));
+    f->p[2] = (int32_t)(shift_round(tca * r->d.z, dsh) -
+                        shift_round((int64_t)o->bc.z - r->o.z, -sf));
+    /* The direction with RT_FRAME_BITS fraction bits. */
+    const int ush = FX_UBITS - RT_FRAME_BITS;
+    f->d[0] = (int32_t)shift_round(r->d.x, ush);
+    f->d[1] = (int32_t)shift_round(r->d.y, ush);
+    f->d[2] = (int32_t)shift_round(r->d.z, ush);
+    /* Base and top, exact from the object's fields (the centre bc.y is
+     * a.y + h/2 rounded down). */
+    f->yb = (int32_t)shift_round((int64_t)o->a.y - o->bc.y, -sf);
+    f->yt = (int32_t)shift_round((int64_t)o->a.y + o->h - o->bc.y, -sf);
+}
+
+/* A cone's side root where its radius k (yt - y) is below this (2^-6 of
+ * the frame, as a frame value), near the apex or anywhere on a needle, is
+ * solved again in a finer frame (thin_side); rt_object.rinv holds the
+ * height below the apex where that is. */
+#define RT_THIN_SIDE ((int64_t)1 << (RT_FRAME_BITS - 6))
+
+/* A ray steeper than a cone's side by more than rounding (its a < 0):
+ * it meets each nappe once. */
+static int cone_steep(int64_t a)
+{
+    return a < -((int64_t)RT_STEEP_MIN_A << (RT_FRAME_BITS - 16));
+}
+
+/* Where a cone is thin, near its apex or along a needle, the side's
+ * quadratic formed at the ray's point nearest the bounding sphere's
+ * centre is ill-conditioned: the roots there split as the square root of
+ * the discriminant, whose rounding (an ulp of the frame, for coefficients
+ * far larger than the radius there) moves them by about 2^-12 of the
+ * frame, and decides whether a ray passing the apex, or grazing a needle,
+ * meets the cone: a shadow ray towards a light at the apex or on a
+ * needle's rim passes it at up to EPS. thin_side solves the side again
+ * about the ray's point at frame distance s0 from tca (a root of the
+ * first solve): from that point, exact in 64 bits (world units with 16 +
+ * FX_UBITS fraction bits, from the ray's own integers), it takes x, z and
+ * the radius w = k (yt - y) there, all small, in a frame 2^e times finer
+ * than the cone's, e as large as keeps them within 2^23: the rounding then
+ * moves the roots 2^-e as much. Returns 1 with *best set for a side hit, 0
+ * for none, or -1 when that point is not thin after all or a root leaves
+ * the fine frame's range (a ray within rounding of a generator's
+ * direction): then the first solve's roots stand. */
+static int thin_side(const rt_object *o, const rt_ray *r, int64_t tca,
+                     const upright_frame *fr, int64_t s0, fx_t tmin,
+                     fx_t *best)
+{
+    const upright_frame f = *fr;
+    const int32_t *d = f.d;
+    const int sf = f.sf;
+    const int64_t ta = tca + shift_round(s0, sf); /* world, Q16.16 */
+    /* o - bc and ta d are each below 2^62 with FX_UBITS more fraction
+     * bits (|o - bc| < 2^32, |ta| < 2^32 raw), and their sum is a point
+     * within the bounding sphere: x and z from the axis, and y46 the
+     * height below the apex. */
+    const int64_t ay = (int64_t)o->a.y + o->h - o->bc.y;
+    const int64_t x46 = ((int64_t)r->o.x - o->bc.x) * FX_UONE + ta * r->d.x;
+    const int64_t z46 = ((int64_t)r->o.z - o->bc.z) * FX_UONE + ta * r->d.z;
+    const int64_t y46 =
+        ay * FX_UONE - (((int64_t)r->o.y - o->bc.y) * FX_UONE + ta * r->d.y);
+    /* w46 = k y46, k with RT_FRAME_BITS fraction bits: y46 split so that
+     * neither product overflows (k < 2^30). */
+    const int64_t yh = y46 >> RT_FRAME_BITS;
+    const int64_t yl = y46 - yh * ((int64_t)1 << RT_FRAME_BITS);
+    if (yh > (INT64_MAX >> 31) || yh < -(INT64_MAX >> 31))
+        return -1;
+    const int64_t w46 = o->k * yh + ((o->k * yl) >> RT_FRAME_BITS);
+    uint64_t m = 0;
+    m |= (uint64_t)(x46 < 0 ? -x46 : x46);
+    m |= (uint64_t)(z46 < 0 ? -z46 : z46);
+    m |= (uint64_t)(w46 < 0 ? -w46 : w46);
+    /* A frame value is a 46-bit world value times 2^(sf - FX_UBITS); the
+     * fine frame's 2^e more. Not thin after all: the first solve stands. */
+    const int64_t fm = shift_round((int64_t)m, FX_UBITS - sf);
+    if (fm >= 2 * RT_THIN_SIDE)
+        return -1;
+    int e = 23 + FX_UBITS - sf - rt_bitlen64_i(m);
+    e = e < 0 ? 0 : (e > 24 ? 24 : e);
+    const int n = FX_UBITS - sf - e;
+    const int32_t qx = (int32_t)shift_round(x46, n);
+    const int32_t qz = (int32_t)shift_round(z46, n);
+    const int64_t qw = shift_round(w46, n);
+    const int64_t qy = shift_round(y46, n); /* height below the apex */
+    /* The cone's coefficients there, as in hit_upright; a is the same at
+     * any scale. */
+    const int32_t kdy = (int32_t)frame_round(fx_imul64(o->k, d[1]));
+    const int64_t a = frame_round(fx_imul64(d[0], d[0]) +
+                                  fx_imul64(d[2], d[2])) -
+                      frame_round(fx_imul64(kdy, kdy));
+    const int64_t b = frame_round(fx_imul64(qx, d[0]) + fx_imul64(qz, d[2])) +
+                      frame_round(qw * kdy);
+    const int64_t c =
+        frame_round(fx_imul64(qx, qx) + fx_imul64(qz, qz) - qw * qw);
+    const int steep = cone_steep(a);
+    int64_t root[2];
+    int nr = quadratic(a, b, c, steep, root);
+    if (steep && nr == 2) {
+        if ((d[1] > 0) != (root[0] < root[1]))
+            root[0] = root[1];
+        nr = 1;
+    }
+    const int64_t lim = (int64_t)1 << 32; /* frame_div's saturation */
+    for (int i = 0; i < nr; i++)
+        if (root[i] >= lim || root[i] <= -lim)
+            return -1;
+    /* The base plane (with the rim slack) in fine units below the apex. */
+    const int64_t base =
+        ((int64_t)f.yt - f.yb + RT_RIM_SLACK) * ((int64_t)1 << e);
+    for (int i = 0; i < nr; i++) {
+        const int64_t y = qy - frame_round(root[i] * d[1]);
+        if ((y < 0 && !steep) || y > base)
+            continue; /* the mirrored nappe, or below the base */
+        if (take(ta + shift_round(root[i], sf + e), tmin, best))
+            return 1;
+    }
+    return 0;
+}
+
+/* The caps of a cylinder or cone seen by the ray of frame f (discs at the
+ * base, bottom, and at the top, a cylinder's only) nearer than *best: 1
+ * with *best and *part (1 + cap) set for a hit. ur is the radius in the
+ * frame. */
+RT_ALWAYS_INLINE static inline int upright_caps(const rt_object *o,
+                                                const rt_ray *r, int64_t tca,
+                                                const upright_frame *f,
+                                                int32_t ur, fx_t tmin,
+                                                fx_t *best, uint8_t *part)
+{
+    const int sf = f->sf;
+    const int64_t rim = (int64_t)RT_RIM_SLACK << (sf > 0 ? sf : 0);
+    int found = 0;
+    if (r->d.y == 0)
+        return 0;
+    for (int cap = 0; cap < 2; cap++) {
+        if (!(o->caps & (cap ? RT_CAP_TOP : RT_CAP_BOTTOM)))
+            continue;
+        /* t in world units, as hit_quad computes it for a plane y =
+         * const: a cap in a floor quad's plane (a shape standing on the
+         * floor) gives the very same t, so the tie goes to the earlier
+         * object instead of flipping with rounding. */
+        int64_t cy = cap ? (int64_t)o->a.y + o->h : o->a.y;
+        int64_t tw = plane_t(cy, r->o.y, r->d.y);
+        if (tw <= tmin || tw >= *best)
+            continue; /* take() would refuse it */
+        if (tw - tca > o->br || tca - tw > o->br)
+            continue; /* outside the bounding sphere; keeps tl small */
+        const int64_t tl = shift_round(tw - tca, -sf);
+        const int64_t x = f->p[0] + frame_round(tl * f->d[0]);
+        const int64_t z = f->p[2] + frame_round(tl * f->d[2]);
+        /* The caps reach RT_RIM_SLACK world ulps (at least as many frame
+         * ulps) past the side's radius for a ray that meets them from
+         * outside, which the side might let through at the rim. A ray
+         * that meets a cap from inside the solid (up at the top, down at
+         * the bottom) crossed the side first if it passed outside the
+         * rim: no slack, or a ray passing just outside would see the
+         * cap's inner face. */
+        const int64_t slack = (cap ? r->d.y < 0 : r->d.y > 0) ? 2 * rim : 0;
+        if (x * x + z * z > fx_imul64(ur, ur) + ur * slack)
+            continue;
+        if (take(tw, tmin, best)) {
+            *part = (uint8_t)(1 + cap);
+            found = 1;
+        }
+    }
+    return found;
+}
+
+/* hit_upright's answer again for a cone whose side had a root s0 where
+ * the cone is thin: the side's hit is thin_side's, and the caps are
+ * tested again against it; or, if thin_side declines, the answer found
+ * (with *t and *part) stands. */
+RT_COLD static int upright_thin(const rt_object *o, const rt_ray *r,
+                                int64_t tca, int64_t s0, fx_t tmin,
+                                fx_t tmax, int found, fx_t *t, uint8_t *part)
+{
+    fx_t best = tmax;
+    uint8_t pt = 0;
+    upright_frame f;
+    frame_set(&f, o, r, tca);
+    int side = thin_side(o, r, tca, &f, s0, tmin, &best);
+    if (side < 0)
+        return found;
+    const int32_t ur = (int32_t)shift_round(o->r, -f.sf);
+    found = upright_caps(o, r, tca, &f, ur, tmin, &best, &pt) | side;
+    if (found) {
+        *t = best;
+        *part = pt;
+    }
+    return found;
+}
+
+/* Cylinder (kind RT_CYLINDER) or cone, in the object's frame. */
+static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
+                       fx_t tmax, fx_t *t, uint8_t *part)
+{
+    int64_t tca, h[3];
+    uint64_t disc;
+    fx_t best = tmax;
+    int64_t root[2];
+    int found = 0, cone = RT_HAS_CONE && o->kind == RT_CONE;
+    if (!bsphere(&o->bc, o->br, o->small, r, tmin, tmax, &tca, &disc, h))
+        return 0;
+    upright_frame f;
+    frame_set(&f, o, r, tca);
+    const int32_t px = f.p[0], py = f.p[1], pz = f.p[2];
+    const int32_t dx = f.d[0], dy = f.d[1], dz = f.d[2];
+    const int32_t yb = f.yb, yt = f.yt;
+    /* The radius in the frame, exact. */
+    const int32_t ur = (int32_t)shift_round(o->r, -f.sf);
+    const int64_t one = (int64_t)1 << RT_FRAME_BITS;
+
+    /* Side: x^2 + z^2 = R(y)^2, R = ur (cylinder) or k (yt - y) (cone). */
+    const int64_t pp = fx_imul64(px, px) + fx_imul64(pz, pz);
+    int64_t a = frame_round(fx_imul64(dx, dx) + fx_imul64(dz, dz));
+    int64_t b = frame_round(fx_imul64(px, dx) + fx_imul64(pz, dz));
+    int64_t c = frame_round(pp - fx_imul64(ur, ur));
+    if (cone) {
+        /* o->k is the slope with RT_FRAME_BITS fraction bits, below 2^30;
+         * ky below 2^31 (|yt - py| < 2^25). */
+        const int32_t kdy = (int32_t)frame_round(fx_imul64(o->k, dy));
+        const int64_t ky = frame_round(fx_imul64(o->k, yt - py));
+        a -= frame_round(fx_imul64(kdy, kdy));
+        b += frame_round(ky * kdy);
+        c = frame_round(pp - ky * ky);
+    }
+    /* Clearly steeper than the side (not within rounding of a
+     * generator's direction, where one root is far and saturates). */
+    const int steep = cone && cone_steep(a);
+    int n = quadratic(a, b, c, steep, root);
+    if (steep && n == 2) {
+        /* A ray steeper than the side meets each nappe once: the root
+         * with the lower y is on the cone, however near the apex rounding
+         * puts it (a y <= top threshold there lets rays through). */
+        if ((dy > 0) != (root[0] < root[1]))
+            root[0] = root[1];
+        n = 1;
+    }
+    for (int i = 0; i < n; i++) {
+        /* Roots of a real hit lie within the bounding sphere's chord. */
+        if (root[i] > 4 * one || root[i] < -4 * one)
+            continue;
+        int64_t y = py + frame_round(root[i] * dy);
+        /* The side reaches RT_RIM_SLACK frame ulps past each cap's
+         * plane, as the caps reach past the side's radius below: the
+         * two are rounded separately, and no ray may pass between. A
+         * cone's apex meets no cap, so it gets no slack: past it lies
+         * the mirrored nappe. */
+        if (y < yb - RT_RIM_SLACK ||
+            (y > yt + (cone ? 0 : RT_RIM_SLACK) && !steep))
+            continue;
+        /* World distance: tca + root 2^(ushift - (F - 16)). */
+        if (take(tca + shift_round(root[i], f.sf), tmin, &best)) {
+            *part = 0;
+            found = 1;
+            break;
+        }
+    }
+    found |= upright_caps(o, r, tca, &f, ur, tmin, &best, part);
+    if (found)
+        *t = best;
+    /* A side root where a cone is thin (near its apex, or on a needle) is
+     * as much rounding's as the ray's: the answer is then upright_thin's.
+     * (A ray within rounding of the cone there has a root: quadratic()
+     * takes a discriminant within its rounding for a tangent's.) */
+    for (int i = 0; cone && i < n; i++)
+        if (root[i] <= 4 * one && root[i] >= -4 * one &&
+            py + frame_round(root[i] * dy) > yt - (int64_t)o->rinv)
+            return upright_thin(o, r, tca, root[i], tmin, tmax, found, t,
+                                part);
+    return found;
+}
+
+#endif /* RT_UPRIGHT_H */
