@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# accuracy.sh: what accuracy costs. Measures every row of the table in
-# docs/accuracy.md and writes docs/accuracy.md and docs/accuracy.svg again
-# (`make accuracy` runs it). Needs gcc, make, awk, arm-none-eabi-gcc and
-# qemu-system-arm; nothing else.
+# accuracy.sh: what accuracy costs. Measures every row of the tables in
+# docs/accuracy.md, keeps them in docs/accuracy-data.tsv and writes
+# docs/accuracy.md and its two charts again (tools/accuracy_report.sh;
+# `make accuracy` runs it). Needs gcc, make, awk, arm-none-eabi-gcc and
+# qemu-system-arm, and netpbm (pnmtopng, pamfunc) for the pictures.
 #
 # For each precision of unit vectors (RT_UNIT_BITS 16, 20, 24 and the
 # default 30) and scene: instructions per pixel on Cortex-M3 and M0 (QEMU
@@ -13,7 +14,8 @@
 # anti-aliasing, depth), measured against the ideal image too (the
 # reference at 16 spp and the scene's depth); the reference renderer
 # itself as firmware in soft double and soft float (bench/softref); and
-# the seed's picture and error heat map at each precision (docs/img/).
+# the seed's picture and error heat map at each precision
+# (docs/img/accuracy/).
 #
 # Environment: ACC_JOBS (QEMU runs at once, default 2), ACC_RUNS (host
 # timing runs, default 7), ACC_WIDTH / ACC_HEIGHT (default 320 x 240).
