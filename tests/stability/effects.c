@@ -285,8 +285,9 @@ void case_image_1x1(void)
     }
 }
 
-/* The room scene used by the wide views below. */
-static const char room[] =
+/* The room scene of the wide views (fov_near_180 and views.c's
+ * fov_near_180_wide); %s is the field of view. */
+const char room[] =
     "camera eye 0 0 0 look 0.2 -0.1 1 fov %s\n" BG_BLUE
     "light -1 1.5 -2\n"
     "material wall color 0.8 0.7 0.6 specular 0.3 checker 0.3 0.3 0.4 0.75\n"

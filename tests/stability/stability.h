@@ -74,6 +74,9 @@ typedef struct {
 /* Background blue, which no surface in these scenes shows. */
 #define BG_BLUE "background 0 0 1\n"
 
+/* effects.c: a room seen from inside it, with %s for the fov. */
+extern const char room[];
+
 #define CAM "camera eye 0 0 -5 look 0 0 0\nmaterial m color 1 1 1\n"
 
 /* Flat colours (ambient only) so a pixel says which quad it shows. */

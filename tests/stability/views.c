@@ -84,16 +84,6 @@ void case_eye_look_60000_apart(void)
 
 /* ==== Fields of view near 180 degrees on wide images (class 3) ========= */
 
-/* A room seen from inside it (the scene of fov_near_180). */
-static const char wide_room[] =
-    "camera eye 0 0 0 look 0.2 -0.1 1 fov %s\n" BG_BLUE
-    "light -1 1.5 -2\n"
-    "material wall color 0.8 0.7 0.6 specular 0.3 checker 0.3 0.3 0.4 0.75\n"
-    "material ball color 0.2 0.8 0.3\n"
-    "box min -3 -2 -4 max 3 2 4 material wall\n"
-    "sphere center 1 -1 2 radius 0.8 material ball\n"
-    "cylinder base -1.5 -2 1.5 radius 0.4 height 3 material ball\n";
-
 /* Fields of view of 179.99, 179.999 and 179.99998 degrees (the largest
  * the parser takes) on images 8, 4 and 3 times as wide as tall, and one 4
  * times as tall: tan(fov / 2) saturates at 32768 beyond 179.9965 degrees,
@@ -111,7 +101,7 @@ void case_fov_near_180_wide(void)
                                     { 16, 64 } };
     for (int i = 0; i < 3; i++) {
         char text[1024];
-        snprintf(text, sizeof text, wide_room, fovs[i]);
+        snprintf(text, sizeof text, room, fovs[i]);
         if (!parse(text, &scene_a))
             return;
         for (int k = 0; k < 4; k++) {
