@@ -358,9 +358,9 @@ static void test_unit_vectors(void)
         fx_vec3 a = rnd_vec();
         int wide = i & 1;
         int sh = (int)(rnd32() % 31);
-        int64_t x = wide ? (int64_t)a.x << sh : a.x;
-        int64_t y = wide ? (int64_t)a.y << sh : a.y;
-        int64_t z = wide ? (int64_t)a.z << sh : a.z;
+        int64_t x = wide ? (int64_t)a.x * ((int64_t)1 << sh) : a.x;
+        int64_t y = wide ? (int64_t)a.y * ((int64_t)1 << sh) : a.y;
+        int64_t z = wide ? (int64_t)a.z * ((int64_t)1 << sh) : a.z;
         if (x == 0 && y == 0 && z == 0)
             continue;
         fx_dir3 u = wide ? fx_d3_normalize64(x, y, z) : fx_d3_normalize(a);
@@ -397,7 +397,7 @@ static void test_unit_vectors(void)
     for (int s = 0; s < 31; s++) {
         int32_t v = (int32_t)(((uint32_t)1 << s) | (s ? 1u : 0u));
         fx_dir3 px = fx_d3_normalize(fx_v3(v, 0, 0));
-        fx_dir3 ny = fx_d3_normalize64(0, -(int64_t)v << 20, 0);
+        fx_dir3 ny = fx_d3_normalize64(0, -((int64_t)v << 20), 0);
         CHECK(px.x == FX_UONE && px.y == 0 && px.z == 0);
         CHECK(ny.x == 0 && ny.y == -FX_UONE && ny.z == 0);
     }
