@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * rt_intersect: ray-shape intersection and surface normals.
+ * rt_intersect: ray-shape intersection (the normals are rt_normal.c's).
  *
  * Every shape is first tested against its bounding sphere with the
  * geometric form (closest approach, then the chord), which is exact in
@@ -423,50 +423,4 @@ int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
         break;
     }
     return 0;
-}
-
-fx_dir3 rt_normal(const rt_object *o, fx_vec3 p, uint8_t part)
-{
-    switch (o->kind) {
-    case RT_SPHERE: {
-        /* (p - a) / r, then one Newton step (|p - a| is r to within the
-         * rounding of p, a relative 2^-16 / r; fx_d3_renorm normalises in
-         * full when that is more than 2^-15). */
-        const int sh = 33 - fx_clz32((uint32_t)o->r); /* b + 1 */
-        const int64_t half = (int64_t)1 << (sh - 1);
-        const fx_vec3 v = fx_v3_sub(p, o->a);
-        return fx_d3_renorm(
-            fx_d3((int32_t)((fx_iumul64(v.x, o->rinv) + half) >> sh),
-                  (int32_t)((fx_iumul64(v.y, o->rinv) + half) >> sh),
-                  (int32_t)((fx_iumul64(v.z, o->rinv) + half) >> sh)));
-    }
-    case RT_QUAD:
-        return o->n;
-    case RT_BOX: {
-        /* part is the axis of the face; its side is the one p lies on. */
-        const fx_t pc[3] = { p.x, p.y, p.z };
-        const fx_t cc[3] = { o->bc.x, o->bc.y, o->bc.z };
-        int32_t v[3] = { 0, 0, 0 };
-        v[part] = pc[part] > cc[part] ? FX_UONE : -FX_UONE;
-        return fx_d3(v[0], v[1], v[2]);
-    }
-    default: {
-        if (part == 1)
-            return fx_d3(0, -FX_UONE, 0);
-        if (part == 2)
-            return fx_d3(0, FX_UONE, 0);
-        fx_t x = fx_sub(p.x, o->a.x), z = fx_sub(p.z, o->a.z);
-        fx_t y = 0;
-        if (o->kind == RT_CONE) {
-            fx_t rho = (fx_t)fx_sqrt_q32((uint64_t)(fx_imul64(x, x)) +
-                                         (uint64_t)(fx_imul64(z, z)));
-            if (rho == 0)
-                return fx_d3(0, FX_UONE, 0); /* apex */
-            /* y = k rho, o->k with RT_FRAME_BITS fraction bits. */
-            return fx_d3_normalize64(x, frame_round(fx_imul64(o->k, rho)),
-                                     z);
-        }
-        return fx_d3_normalize(fx_v3(x, y, z));
-    }
-    }
 }

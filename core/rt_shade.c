@@ -56,10 +56,11 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     const rt_object *o = &s->obj[oi];
     const rt_material *m = &s->mat[o->material];
     /* From a small origin a hit below 2^30 cannot leave the range. */
-    const fx_vec3 p = r->small && t < ((fx_t)1 << 30)
-                          ? fx_v3_madd_d_near(r->o, r->d, t)
-                          : fx_v3_madd_d(r->o, r->d, t);
-    const fx_dir3 ng_out = rt_normal(o, p, part);
+    fx_vec3 p = r->small && t < ((fx_t)1 << 30)
+                    ? fx_v3_madd_d_near(r->o, r->d, t)
+                    : fx_v3_madd_d(r->o, r->d, t);
+    const fx_dir3 ng_out =
+        rt_normal(o, r, t, &p, part, m->reflect > 0 || m->transparency > 0);
     fx_dir3 ng = ng_out;
     const int64_t dn = fx_d3_dot_raw(r->d, ng);
     int outside = o->kind == RT_QUAD || dn <= 0;

@@ -11,7 +11,13 @@
 int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                  fx_t *t, uint8_t *part);
 
-/* Outward unit normal of o at surface point p on the given part. */
-fx_dir3 rt_normal(const rt_object *o, fx_vec3 p, uint8_t part);
+/* Outward unit normal of o on the given part where ray r hits it at t.
+ * *p is the hit point o + t d, rounded. With precise set (for a hit that
+ * casts reflected or refracted rays, whose directions inherit the
+ * normal's error), on a cylinder's side *p becomes the point of the side
+ * where the ray meets it, rounded, and the normal is taken there: the
+ * rounding of t and of p moves o + t d off the side (rt_normal.c). */
+fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *p,
+                  uint8_t part, int precise);
 
 #endif /* RT_SHAPE_H */

@@ -432,7 +432,8 @@ int cast_ref(const rt_object *o, const rt_ray *r, double *t,
 fx_dir3 normal_at(const rt_object *o, const rt_ray *r, double t,
                          uint8_t part)
 {
-    return rt_normal(o, fx_v3_madd_d(r->o, r->d, D2F(t)), part);
+    fx_vec3 p = fx_v3_madd_d(r->o, r->d, D2F(t));
+    return rt_normal(o, r, D2F(t), &p, part, 1);
 }
 
 /* |n - (x, y, z)| summed per component, in units. */

@@ -1,0 +1,172 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * rt_normal: outward unit normals at a ray's hit.
+ *
+ * The hit point p = o + t d is rounded to Q16.16 and t itself to 2^-16;
+ * either error, up to 2^-17 of a unit across the surface (more where the
+ * ray grazes it), tilts a curved surface's normal by that over its
+ * radius. A ray that bounces between the walls of a glass cylinder
+ * multiplies the tilt at every bounce, so for a cylinder side that casts
+ * secondary rays the unrounded o + t d is formed with 30 fraction bits
+ * and moved along d by one Newton step onto the side, and the normal and
+ * the hit point are taken there (docs/numerics.md).
+ */
+#include "rt_shape.h"
+
+/* v 2^-n, rounded to nearest, for n > 0. */
+static int64_t shr_round(int64_t v, int n)
+{
+    return (v + ((int64_t)1 << (n - 1))) >> n;
+}
+
+/* Bounds beyond which side_step leaves the hit point as it is. */
+#define FINE_V_MAX ((int32_t)1 << 30) /* |p - a| per component, raw */
+#define FINE_E_MAX ((int32_t)1 << 17) /* o + t d - p: 8 Q16.16 ulps */
+#define FINE_G_MAX ((int64_t)1 << 40) /* |v|^2 - r^2, Q32.32 */
+/* The longest Newton step and the longest move, 2^-8 (2^22 with 30
+ * fraction bits). */
+#define FINE_S_BITS 22
+#define FINE_Q_MAX ((int32_t)1 << 22)
+
+/* -g / den with 30 fraction bits, for g with 46 and den with
+ * 16 + FX_UBITS, in *s; 0 if its magnitude would pass 2^FINE_S_BITS. */
+static int newton_step(int64_t g, int64_t den, int32_t *s)
+{
+    if (den == 0)
+        return 0;
+    const int neg = (g < 0) == (den < 0); /* -g / den < 0 */
+    uint64_t ug = (uint64_t)(g < 0 ? -g : g);
+    uint64_t ud = (uint64_t)(den < 0 ? -den : den);
+    /* |s| <= 2^FINE_S_BITS: |g| <= |den| 2^(FINE_S_BITS - FX_UBITS). */
+    if (FX_UBITS >= FINE_S_BITS ? ug > ud >> (FX_UBITS - FINE_S_BITS)
+                                : ug > ud << (FINE_S_BITS - FX_UBITS))
+        return 0;
+    const int k = ud >> 31 ? 33 - fx_clz64(ud) : 0;
+    ud >>= k; /* below 2^31; the dividend below ud 2^FINE_S_BITS */
+    ug = k <= FX_UBITS ? ug << (FX_UBITS - k) : ug >> (k - FX_UBITS);
+    const int32_t su = (int32_t)fx_udiv64_32(ug, (uint32_t)ud);
+    *s = neg ? -su : su;
+    return 1;
+}
+
+/* Where ray r meets the side of a cylinder (axis through a, along y,
+ * radius rad) near its rounded hit p = o + t d: Newton steps along d from
+ * the unrounded o + t d onto the side. A step moves the point by its
+ * distance from the side divided by the cosine of the angle of
+ * incidence and leaves an error of about its square over the radius
+ * times that cosine: one step, or up to four while a step is longer than
+ * a quarter of a Q16.16 ulp (a ray near tangent). Sets q to the move from
+ * p, with 30 fraction bits, and returns 1; returns 0 where the move
+ * would pass 2^-8 (a ray within rounding of tangent) or the values leave
+ * their ranges, and the caller then takes p. */
+static int side_step(const rt_ray *r, fx_t t, fx_vec3 p, fx_vec3 a,
+                     fx_t rad, int32_t q[3])
+{
+    const int32_t pc[3] = { p.x, p.y, p.z }, ac[3] = { a.x, a.y, a.z };
+    const int32_t oc[3] = { r->o.x, r->o.y, r->o.z };
+    const int32_t dc[3] = { r->d.x, r->d.y, r->d.z };
+    int32_t v[3] = { 0, 0, 0 };
+    int64_t g0 = -fx_imul64(rad, rad), vd = 0;
+    for (int i = 0; i < 3; i++) {
+        /* q = o + t d - p, 30 fraction bits: t d has 16 + FX_UBITS. */
+        const int64_t e =
+            shr_round(fx_imul64(t, dc[i]) - ((int64_t)pc[i] - oc[i]) *
+                                                 ((int64_t)1 << FX_UBITS),
+                      FX_UBITS - 14);
+        if (e >= FINE_E_MAX || e <= -FINE_E_MAX)
+            return 0;
+        q[i] = (int32_t)e;
+        if (i == 1)
+            continue; /* v = p - a across the axis: x and z */
+        const int64_t vi = (int64_t)pc[i] - ac[i]; /* Q16.16, exact */
+        if (vi >= FINE_V_MAX || vi <= -FINE_V_MAX)
+            return 0;
+        v[i] = (int32_t)vi;
+        g0 += fx_imul64(v[i], v[i]);
+        vd += fx_imul64(v[i], dc[i]);
+    }
+    if (g0 >= FINE_G_MAX || g0 <= -FINE_G_MAX)
+        return 0;
+    for (int step = 0; step < 4; step++) {
+        /* At p + q: g = |v + q|^2 - r^2 with 46 fraction bits, and
+         * den = 2 (v + q).d with 16 + FX_UBITS. */
+        int64_t g = g0 * ((int64_t)1 << 14), den = vd;
+        for (int i = 0; i < 3; i += 2) {
+            g += 2 * fx_imul64(v[i], q[i]) + (fx_imul64(q[i], q[i]) >> 14);
+            den += fx_imul64(q[i], dc[i]) >> 14;
+        }
+        int32_t s;
+        if (!newton_step(g, 2 * den, &s))
+            return 0;
+        for (int i = 0; i < 3; i++) {
+            q[i] += (int32_t)shr_round(fx_imul64(s, dc[i]), FX_UBITS);
+            if (q[i] >= FINE_Q_MAX || q[i] <= -FINE_Q_MAX)
+                return 0;
+        }
+        if (s <= (1 << 12) && s >= -(1 << 12))
+            break;
+    }
+    return 1;
+}
+
+/* p moved by q (30 fraction bits), rounded to Q16.16. */
+static fx_vec3 moved(fx_vec3 p, const int32_t q[3])
+{
+    return fx_v3(p.x + (fx_t)shr_round(q[0], 14),
+                 p.y + (fx_t)shr_round(q[1], 14),
+                 p.z + (fx_t)shr_round(q[2], 14));
+}
+
+fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *pp,
+                  uint8_t part, int precise)
+{
+    const fx_vec3 p = *pp;
+    int32_t q[3];
+    switch (o->kind) {
+    case RT_SPHERE: {
+        /* (p - a) / r, then one Newton step (|p - a| is r to within the
+         * rounding of p, a relative 2^-16 / r; fx_d3_renorm normalises in
+         * full when that is more than 2^-15). */
+        const int sh = 33 - fx_clz32((uint32_t)o->r); /* b + 1 */
+        const int64_t half = (int64_t)1 << (sh - 1);
+        const fx_vec3 v = fx_v3_sub(p, o->a);
+        return fx_d3_renorm(
+            fx_d3((int32_t)((fx_iumul64(v.x, o->rinv) + half) >> sh),
+                  (int32_t)((fx_iumul64(v.y, o->rinv) + half) >> sh),
+                  (int32_t)((fx_iumul64(v.z, o->rinv) + half) >> sh)));
+    }
+    case RT_QUAD:
+        return o->n;
+    case RT_BOX: {
+        /* part is the axis of the face; its side is the one p lies on. */
+        const fx_t pc[3] = { p.x, p.y, p.z };
+        const fx_t cc[3] = { o->bc.x, o->bc.y, o->bc.z };
+        int32_t v[3] = { 0, 0, 0 };
+        v[part] = pc[part] > cc[part] ? FX_UONE : -FX_UONE;
+        return fx_d3(v[0], v[1], v[2]);
+    }
+    default: {
+        if (part == 1)
+            return fx_d3(0, -FX_UONE, 0);
+        if (part == 2)
+            return fx_d3(0, FX_UONE, 0);
+        fx_t x = fx_sub(p.x, o->a.x), z = fx_sub(p.z, o->a.z);
+        if (o->kind == RT_CONE) {
+            fx_t rho = (fx_t)fx_sqrt_q32((uint64_t)(fx_imul64(x, x)) +
+                                         (uint64_t)(fx_imul64(z, z)));
+            if (rho == 0)
+                return fx_d3(0, FX_UONE, 0); /* apex */
+            /* y = k rho, o->k with RT_FRAME_BITS fraction bits. */
+            return fx_d3_normalize64(
+                x, shr_round(fx_imul64(o->k, rho), RT_FRAME_BITS), z);
+        }
+        if (o->kind == RT_CYLINDER && precise &&
+            side_step(r, t, p, o->a, o->r, q)) {
+            *pp = moved(p, q);
+            return fx_d3_normalize64((int64_t)x * (1 << 14) + q[0], 0,
+                                     (int64_t)z * (1 << 14) + q[2]);
+        }
+        return fx_d3_normalize(fx_v3(x, 0, z));
+    }
+    }
+}
