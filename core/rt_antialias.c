@@ -14,12 +14,7 @@ static fx_t clamp01(fx_t v)
     return v < 0 ? 0 : (v > FX_ONE ? FX_ONE : v);
 }
 
-/* One pixel row's camera rays: what they may hit (rt_cull), and where. */
-typedef struct {
-    rt_row_spans hit;
-    int32_t lo, hi; /* columns outside [lo, hi] can hit nothing */
-    rt_cam_ray base[RT_MAX_SPP_SIDE]; /* w + sy up for each sample row */
-} row_spans;
+typedef rt_aa_spans row_spans;
 
 static void row_setup(row_spans *rs, const rt_tracer *tr,
                       const rt_cam_frame *cf, const rt_options *o, unsigned y)
@@ -48,6 +43,12 @@ static void row_setup(row_spans *rs, const rt_tracer *tr,
         if (rs->hit.span[k].x1 > rs->hi)
             rs->hi = rs->hit.span[k].x1;
     }
+}
+
+void rt_aa_row_setup(rt_aa_spans *rs, const rt_tracer *tr,
+                     const rt_cam_frame *cf, const rt_options *o, unsigned y)
+{
+    row_setup(rs, tr, cf, o, y);
 }
 
 /* The sample at screen offset k (rt_cam_col_k) along the sample row whose

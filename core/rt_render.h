@@ -33,6 +33,13 @@ typedef struct {
                                level divided by spp, all of them together
                                (see docs/render-model.md). 1: trace every
                                ray to `depth` */
+    uint8_t draft;          /* 0: every pixel is traced. 1..255: a draft
+                               render (adaptive undersampling, rt_draft.h):
+                               every other pixel of every other row is
+                               traced, and a pixel between them only where
+                               they hit different objects, differ in
+                               shadow or differ by more than this many
+                               8-bit levels; elsewhere it is their mean */
 } rt_options;
 
 /* Ray and test counters. The renderer adds to them and never resets them,
@@ -45,6 +52,9 @@ typedef struct {
     uint64_t tests;      /* ray-object intersection tests */
     uint64_t cut;        /* reflected and refracted rays left untraced as
                             too faint (rt_options.trace_all) */
+    uint64_t interpolated; /* pixels whose colour is the mean of traced
+                              neighbours, without a ray of their own
+                              (rt_options.draft); the rest were traced */
 } rt_stats;
 
 /* Receives finished row y. `row` holds rt_row_bytes() bytes and belongs to
@@ -59,7 +69,8 @@ void rt_options_from_scene(rt_options *o, const rt_scene *s);
 size_t rt_row_bytes(const rt_options *o);
 
 /* Bytes the caller's row buffer must hold: rt_row_bytes(), plus 9 * width
- * of scratch when adaptive anti-aliasing is on. */
+ * of scratch when adaptive anti-aliasing is on, plus about 10 * width
+ * (rt_draft_bytes()) for a draft render. */
 size_t rt_buffer_bytes(const rt_options *o);
 
 /* Renders rows y0 <= y < y1 (top row is 0) into row_buf (rt_buffer_bytes()

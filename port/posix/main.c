@@ -43,7 +43,7 @@ typedef rt_status (*render_fn)(const rt_scene *, const rt_options *, int,
 typedef struct {
     const char *scene_path;
     const char *out_path;
-    long width, height, spp, depth, jobs, adaptive;
+    long width, height, spp, depth, jobs, adaptive, draft;
     int stats, quiet, reference, build_flags, emit_c;
     const char *format; /* rgb888 (default), rgb565le, rgb565be */
     int dither;
@@ -186,6 +186,10 @@ static int parse_args(int argc, char **argv, cli *c)
                    (val = cli_value(argc, argv, &i, a)) != NULL) {
             if (cli_long(a, val, 1, 255, &c->adaptive))
                 return 2;
+        } else if (strcmp(a, "--draft") == 0 &&
+                   (val = cli_value(argc, argv, &i, a)) != NULL) {
+            if (cli_long(a, val, 1, 255, &c->draft))
+                return 2;
         } else if (TAKE("-j", "--jobs")) {
             if (cli_long(a, val, 1, 64, &c->jobs))
                 return 2;
@@ -298,6 +302,7 @@ static void add_stats(rt_stats *a, const rt_stats *b)
     a->refraction += b->refraction;
     a->tests += b->tests;
     a->cut += b->cut;
+    a->interpolated += b->interpolated;
 }
 
 /* Rows a worker takes at a time: small enough to balance threads, large
@@ -377,6 +382,7 @@ static int render_scene(const cli *c, const rt_scene *scene)
     j.opt.dither = (uint8_t)c->dither;
     j.opt.adaptive = (uint8_t)c->adaptive;
     j.opt.trace_all = (uint8_t)c->trace_all;
+    j.opt.draft = (uint8_t)c->draft;
     if (c->adaptive && j.opt.spp == 1)
         return cli_error("--adaptive needs more than one sample per pixel; "
                          "%s renders at 1 spp, so add -s 4, 9 or 16",
@@ -385,6 +391,9 @@ static int render_scene(const cli *c, const rt_scene *scene)
     if (c->reference && c->adaptive)
         return cli_error("--adaptive is a fixed-point core mode; the "
                          "reference always takes every sample");
+    if (c->reference && c->draft)
+        return cli_error("--draft is a fixed-point core mode; the "
+                         "reference always traces every pixel");
     j.progress = !c->quiet && isatty(STDERR_FILENO);
     pthread_mutex_init(&j.lock, NULL);
 
@@ -475,6 +484,11 @@ static int render_scene(const cli *c, const rt_scene *scene)
         fprintf(stderr, "intersection_tests %llu\n",
                 (unsigned long long)j.stats.tests);
         fprintf(stderr, "rays_cut %llu\n", (unsigned long long)j.stats.cut);
+        fprintf(stderr, "traced_pixels %llu\n",
+                (unsigned long long)((uint64_t)j.opt.width * j.opt.height -
+                                     j.stats.interpolated));
+        fprintf(stderr, "interpolated_pixels %llu\n",
+                (unsigned long long)j.stats.interpolated);
         fprintf(stderr, "render_seconds %.6f\n", secs);
     }
     pthread_mutex_destroy(&j.lock);
