@@ -28,7 +28,8 @@ void rt_aa_row(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
                const rt_options *o, unsigned y, uint8_t *row);
 
 /* Rows y0 <= y < y1 with adaptive anti-aliasing (o->adaptive > 0,
- * cfn->n > 1), each handed to fn; row_buf holds rt_buffer_bytes(o). */
+ * cfn->n > 1), each handed to fn; row_buf holds rt_buffer_bytes(o). With
+ * o->draft > 0 the centre samples come from a draft render. */
 rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
                          const rt_cam_frame *cfn, const rt_options *o, int y0,
                          int y1, uint8_t *row_buf, rt_row_fn fn, void *ctx);

@@ -93,33 +93,21 @@ uint16_t rt_thin_front(const rt_thin *t, const rt_scene *s, const rt_ray *r,
     return bits;
 }
 
-int rt_thin_may_hide(const rt_thin *t, const rt_tracer *tr, rt_work *wk,
-                     const rt_cam_frame *cf, const rt_aa_spans *rs,
-                     unsigned width, unsigned x, unsigned obj, fx_t tmax,
-                     unsigned front, rt_ray *r, int *have_ray)
+int rt_thin_hit(const rt_thin *t, const rt_tracer *tr, rt_work *wk,
+                const rt_cam_frame *cf, const rt_aa_spans *rs, unsigned width,
+                unsigned x, unsigned i, fx_t tmax, rt_ray *r, int *have_ray)
 {
-    const rt_object *objs = tr->scene->obj;
-    for (unsigned k = 0; k < rs->hit.count; k++) {
-        const rt_span *sp = &rs->hit.span[k];
-        const unsigned i = sp->obj, q = t->quad_bit[i];
-        fx_t ti;
-        uint8_t pi;
-        if (x < (unsigned)sp->x0 || x > (unsigned)sp->x1 || i == obj)
-            continue;
-        if (q < RT_THIN_QUADS ? ((front >> q) & 1u) : t->near[i] > tmax)
-            continue; /* it cannot be in front */
-        if (cf->n != 1)
-            return 1;
-        if (!*have_ray) {
-            rt_thin_ray(tr->scene, cf, &rs->base[0],
-                        rt_cam_col_k(width, 1, x, 0), r);
-            *have_ray = 1;
-        }
-        RT_COUNT(wk, tests);
-        if (rt_intersect(&objs[i], r, RT_EPS,
-                         tmax > FX_MAX - 4096 ? FX_MAX : tmax + 4096, &ti,
-                         &pi))
-            return 1;
+    fx_t ti;
+    uint8_t pi;
+    (void)t;
+    if (cf->n != 1)
+        return 1;
+    if (!*have_ray) {
+        rt_thin_ray(tr->scene, cf, &rs->base[0], rt_cam_col_k(width, 1, x, 0),
+                    r);
+        *have_ray = 1;
     }
-    return 0;
+    RT_COUNT(wk, tests);
+    return rt_intersect(&tr->scene->obj[i], r, RT_EPS,
+                        tmax > FX_MAX - 4096 ? FX_MAX : tmax + 4096, &ti, &pi);
 }

@@ -53,14 +53,34 @@ void rt_thin_row(rt_aa_spans *rs, const rt_scene *s, const rt_cam_frame *cf,
 uint16_t rt_thin_front(const rt_thin *t, const rt_scene *s, const rt_ray *r,
                        fx_t tmax);
 
+/* 1 if the centre ray of pixel x (of the row of rs; made into *r once,
+ * *have_ray then 1) hits object i nearer than tmax, or with more samples
+ * than one per pixel, always. */
+int rt_thin_hit(const rt_thin *t, const rt_tracer *tr, rt_work *wk,
+                const rt_cam_frame *cf, const rt_aa_spans *rs, unsigned width,
+                unsigned x, unsigned i, fx_t tmax, rt_ray *r, int *have_ray);
+
 /* 1 if at column x of the row of rs an object other than obj may be seen
  * in front of neighbours that hit obj at most tmax away, all in front of
- * the quads of the bits front. The centre ray of the pixel (one sample
- * per pixel) goes to *r, and *have_ray to 1, once it was needed; with
- * more samples a possible object is enough. */
-int rt_thin_may_hide(const rt_thin *t, const rt_tracer *tr, rt_work *wk,
-                     const rt_cam_frame *cf, const rt_aa_spans *rs,
-                     unsigned width, unsigned x, unsigned obj, fx_t tmax,
-                     unsigned front, rt_ray *r, int *have_ray);
+ * the quads of the bits front (rt_thin_hit decides). Inline: it runs for
+ * most pixels of a draft. */
+static inline int rt_thin_may_hide(const rt_thin *t, const rt_tracer *tr,
+                                   rt_work *wk, const rt_cam_frame *cf,
+                                   const rt_aa_spans *rs, unsigned width,
+                                   unsigned x, unsigned obj, fx_t tmax,
+                                   unsigned front, rt_ray *r, int *have_ray)
+{
+    for (unsigned k = 0; k < rs->hit.count; k++) {
+        const rt_span *sp = &rs->hit.span[k];
+        const unsigned i = sp->obj, q = t->quad_bit[i];
+        if (x < (unsigned)sp->x0 || x > (unsigned)sp->x1 || i == obj)
+            continue;
+        if (q < RT_THIN_QUADS ? ((front >> q) & 1u) : t->near[i] > tmax)
+            continue; /* it cannot be in front */
+        if (rt_thin_hit(t, tr, wk, cf, rs, width, x, i, tmax, r, have_ray))
+            return 1;
+    }
+    return 0;
+}
 
 #endif /* RT_THIN_H */

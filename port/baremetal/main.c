@@ -66,16 +66,18 @@ static rt_scene scene;
 #define FW_DRAFT 0
 #endif
 
-/* Bytes per pixel of the row buffer (rt_buffer_bytes()): the RGB888 row,
- * plus three rows of centre samples for adaptive anti-aliasing, plus two
- * lattice rows, a row and the flags of a draft render (about 18 bytes a
- * pixel and 64 bytes). */
-#define FW_BUF_PIXEL_BYTES                                                    \
-    (3 + (FW_ADAPTIVE > 0 ? 9 : 0) + (FW_DRAFT > 0 ? 18 : 0))
-#define FW_BUF_EXTRA (FW_DRAFT > 0 ? 64 : 0)
+/* The row buffer (rt_buffer_bytes()): the RGB888 row, plus three rows of
+ * centre samples for adaptive anti-aliasing, plus the rows of a draft
+ * render's levels, a row and its flags (below 25 bytes a pixel and 128
+ * bytes) for the width asked for, or the widest row. */
+#define FW_BUF_PIXELS                                                         \
+    (FW_WIDTH > 0 && FW_WIDTH < FW_ROW_PIXELS ? FW_WIDTH : FW_ROW_PIXELS)
+#define FW_BUF_BYTES                                                          \
+    (FW_ROW_PIXELS * (FW_ADAPTIVE > 0 ? 12 : 3) +                             \
+     (FW_DRAFT > 0 ? FW_BUF_PIXELS * 25 + 128 : 0))
 
 /* In .bss, so `make size` accounts for it. */
-static uint8_t row_buf[FW_ROW_PIXELS * FW_BUF_PIXEL_BYTES + FW_BUF_EXTRA];
+static uint8_t row_buf[FW_BUF_BYTES];
 
 static void log_status(const char *what, rt_status st)
 {
