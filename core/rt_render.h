@@ -35,11 +35,12 @@ typedef struct {
                                ray to `depth` */
     uint8_t draft;          /* 0: every pixel is traced. 1..255: a draft
                                render (adaptive undersampling, rt_draft.h):
-                               every other pixel of every other row is
-                               traced, and a pixel between them only where
-                               they hit different objects, differ in
-                               shadow or differ by more than this many
-                               8-bit levels; elsewhere it is their mean */
+                               a coarse lattice of pixels is traced, and a
+                               pixel between only where its neighbours
+                               hit other objects or texture cells, differ
+                               in shadow or by more than this many 8-bit
+                               levels, or may hide a thin object; the rest
+                               is their mean (docs/effects.md) */
 } rt_options;
 
 /* Ray and test counters. The renderer adds to them and never resets them,
@@ -69,8 +70,8 @@ void rt_options_from_scene(rt_options *o, const rt_scene *s);
 size_t rt_row_bytes(const rt_options *o);
 
 /* Bytes the caller's row buffer must hold: rt_row_bytes(), plus 9 * width
- * of scratch when adaptive anti-aliasing is on, plus about 10 * width
- * (rt_draft_bytes()) for a draft render. */
+ * of scratch when adaptive anti-aliasing is on, plus about 25 * width for
+ * a draft render (its lattice rows). */
 size_t rt_buffer_bytes(const rt_options *o);
 
 /* Renders rows y0 <= y < y1 (top row is 0) into row_buf (rt_buffer_bytes()
