@@ -256,7 +256,8 @@ static void trace_pixel(rt_draft *d, unsigned x, entry *e, const rt_ray *r1)
         }
     }
     for (unsigned k = 0; k < 3; k++)
-        e->rgb[k] = fx_to_u8((fx_t)((sum[k] + spp / 2) / spp));
+        e->rgb[k] = fx_to_u8(
+            (fx_t)(spp <= 1 ? sum[k] : (sum[k] + spp / 2) / spp));
 }
 
 /* Pixel x of row d->rs_y halfway between the m (2 or 4) entries nb: their
