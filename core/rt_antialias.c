@@ -6,7 +6,7 @@
  * or, with adaptive anti-aliasing, its centre sample unless its
  * neighbourhood differs.
  */
-#include "rt_antialias.h"
+#include "rt_draft.h"
 #include "rt_pixel.h"
 
 static fx_t clamp01(fx_t v)
@@ -14,12 +14,7 @@ static fx_t clamp01(fx_t v)
     return v < 0 ? 0 : (v > FX_ONE ? FX_ONE : v);
 }
 
-/* One pixel row's camera rays: what they may hit (rt_cull), and where. */
-typedef struct {
-    rt_row_spans hit;
-    int32_t lo, hi; /* columns outside [lo, hi] can hit nothing */
-    rt_cam_ray base[RT_MAX_SPP_SIDE]; /* w + sy up for each sample row */
-} row_spans;
+typedef rt_aa_spans row_spans;
 
 static void row_setup(row_spans *rs, const rt_tracer *tr,
                       const rt_cam_frame *cf, const rt_options *o, unsigned y)
@@ -48,6 +43,12 @@ static void row_setup(row_spans *rs, const rt_tracer *tr,
         if (rs->hit.span[k].x1 > rs->hi)
             rs->hi = rs->hit.span[k].x1;
     }
+}
+
+void rt_aa_row_setup(rt_aa_spans *rs, const rt_tracer *tr,
+                     const rt_cam_frame *cf, const rt_options *o, unsigned y)
+{
+    row_setup(rs, tr, cf, o, y);
 }
 
 /* The sample at screen offset k (rt_cam_col_k) along the sample row whose
@@ -129,7 +130,8 @@ void rt_aa_row(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
  * o->adaptive (in 8-bit levels, any channel) gets the full n x n grid. The
  * centre samples of rows y-1..y+1 live in the scratch part of row_buf, so a
  * band computes the rows around it too and any banding gives the same
- * bytes. */
+ * bytes. With o->draft the centre samples are a draft render's rows
+ * (rt_draft.h), whose scratch follows. */
 rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
                          const rt_cam_frame *cfn, const rt_options *o, int y0,
                          int y1, uint8_t *row_buf, rt_row_fn fn, void *ctx)
@@ -141,10 +143,18 @@ rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
     row_spans rs;
     rt_cam_setup(&cf1_store, tr->scene, o->width, o->height, 1);
     const unsigned w = o->width;
-    uint8_t *slot[3];
+    uint8_t *slot[3], *flags[3];
     int slot_y[3] = { -1, -1, -1 };
+    rt_draft draft; /* with o->draft: the centre samples are a draft */
     for (int k = 0; k < 3; k++)
         slot[k] = row_buf + rt_pixel_row_bytes(o) + (size_t)k * 3u * w;
+    if (o->draft) {
+        uint8_t *scratch = slot[2] + 3u * w;
+        rt_draft_init(&draft, tr, wk, cf1, o, scratch);
+        for (int k = 0; k < 3; k++)
+            flags[k] = scratch + rt_draft_slot_bytes(o) +
+                       (size_t)k * rt_draft_flag_bytes(o);
+    }
     for (int y = y0; y < y1; y++) {
         /* Centre samples of rows y-1, y, y+1 (clamped to the image). */
         const uint8_t *near[3];
@@ -152,12 +162,14 @@ rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
             int yy =
                 y + d < 0 ? 0 : (y + d >= o->height ? o->height - 1 : y + d);
             unsigned k = (unsigned)yy % 3u; /* yy >= 0: o->height >= 1 */
-            if (slot_y[k] != yy) {
+            if (slot_y[k] != yy && o->draft) {
+                rt_draft_row(&draft, (unsigned)yy, slot[k], flags[k]);
+            } else if (slot_y[k] != yy) {
                 row_setup(&rs, tr, cf1, o, (unsigned)yy);
                 for (unsigned x = 0; x < w; x++)
                     pixel(tr, wk, cf1, &rs, o, x, slot[k] + 3 * x);
-                slot_y[k] = yy;
             }
+            slot_y[k] = yy;
             near[d + 1] = slot[k];
         }
         row_setup(&rs, tr, cfn, o, (unsigned)y);
@@ -180,6 +192,9 @@ rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
             uint8_t rgb8[3] = { c[0], c[1], c[2] };
             if (contrast > o->adaptive)
                 pixel(tr, wk, cfn, &rs, o, x, rgb8);
+            else if (RT_STATS && wk->stats && o->draft &&
+                     ((flags[(unsigned)y % 3u][x / 8] >> (x % 8)) & 1u))
+                wk->stats->interpolated++;
             rt_put_pixel(row_buf, o, x, (unsigned)y, rgb8);
         }
         if (fn(ctx, y, row_buf, rt_pixel_row_bytes(o)) != 0)

@@ -9,13 +9,27 @@
 
 #include "rt_trace.h"
 
+/* One pixel row's camera rays: what they may hit (rt_cull), and where. */
+typedef struct {
+    rt_row_spans hit;
+    int32_t lo, hi; /* columns outside [lo, hi] can hit nothing */
+    rt_cam_ray base[RT_MAX_SPP_SIDE]; /* w + sy up for each sample row */
+} rt_aa_spans;
+
+/* Sets *rs up for pixel row y at cf->n x cf->n samples: the row's spans
+ * (rt_cull_row, or every object without RT_CULL), their column range and
+ * the sample rows' bases. */
+void rt_aa_row_setup(rt_aa_spans *rs, const rt_tracer *tr,
+                     const rt_cam_frame *cf, const rt_options *o, unsigned y);
+
 /* Fills row y (rt_row_bytes(o) bytes) in o->format, each pixel the mean
  * of its cf->n x cf->n samples. */
 void rt_aa_row(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
                const rt_options *o, unsigned y, uint8_t *row);
 
 /* Rows y0 <= y < y1 with adaptive anti-aliasing (o->adaptive > 0,
- * cfn->n > 1), each handed to fn; row_buf holds rt_buffer_bytes(o). */
+ * cfn->n > 1), each handed to fn; row_buf holds rt_buffer_bytes(o). With
+ * o->draft > 0 the centre samples come from a draft render. */
 rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
                          const rt_cam_frame *cfn, const rt_options *o, int y0,
                          int y1, uint8_t *row_buf, rt_row_fn fn, void *ctx);

@@ -97,6 +97,14 @@
 #define RT_UNIT_BITS 30
 #endif
 
+/* Levels of a draft render's lattice (rt_draft.h): it traces every
+ * 2^RT_DRAFT_LEVELS-th pixel of every 2^RT_DRAFT_LEVELS-th row, then fills
+ * in the pixels between them level by level, halving the spacing. 1..3;
+ * each level keeps two rows of 14 bytes per lattice column. */
+#ifndef RT_DRAFT_LEVELS
+#define RT_DRAFT_LEVELS 2
+#endif
+
 /* 1: camera rays test only the objects their pixel row and column can
  * reach (rt_cull.c; costs RT_MAX_OBJECTS * 6 bytes of stack). 0: every
  * camera ray tests every object. The image is the same either way. */
@@ -268,6 +276,9 @@
 /* ---- Checks -------------------------------------------------------------- */
 
 /* The scene's field types bound the capacities. */
+#if RT_DRAFT_LEVELS < 1 || RT_DRAFT_LEVELS > 3
+#error "RT_DRAFT_LEVELS must be 1..3"
+#endif
 #if RT_MAX_LIGHTS < 1 || RT_MAX_LIGHTS > 255
 #error "RT_MAX_LIGHTS must be 1..255: rt_scene.n_lights is a uint8_t"
 #endif

@@ -5,7 +5,7 @@
  * row depends only on its own y, so any banding of rows gives the same
  * bytes.
  */
-#include "rt_antialias.h"
+#include "rt_draft.h"
 #include "rt_pixel.h"
 
 void rt_options_from_scene(rt_options *o, const rt_scene *s)
@@ -18,6 +18,7 @@ void rt_options_from_scene(rt_options *o, const rt_scene *s)
     o->dither = 0;
     o->adaptive = 0;
     o->trace_all = 0;
+    o->draft = 0;
 }
 
 size_t rt_row_bytes(const rt_options *o)
@@ -30,6 +31,8 @@ size_t rt_buffer_bytes(const rt_options *o)
     size_t extra = 0;
     if (RT_HAS_SUPERSAMPLING && o->adaptive && o->spp > 1)
         extra = 9u * o->width; /* three rows of 1-spp colours */
+    if (o->draft)
+        extra += rt_draft_bytes(o);
     return rt_row_bytes(o) + extra;
 }
 
@@ -109,6 +112,8 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
     rt_cam_setup(&cf, s, o->width, o->height, n);
     if (RT_HAS_SUPERSAMPLING && o->adaptive && n > 1)
         return rt_aa_adaptive(&tr, &wk, &cf, o, y0, y1, row_buf, fn, ctx);
+    if (o->draft)
+        return rt_draft_render(&tr, &wk, &cf, o, y0, y1, row_buf, fn, ctx);
     for (int y = y0; y < y1; y++) {
         rt_aa_row(&tr, &wk, &cf, o, (unsigned)y, row_buf);
         if (fn(ctx, y, row_buf, rt_row_bytes(o)) != 0)

@@ -33,6 +33,14 @@ typedef struct {
                                level divided by spp, all of them together
                                (see docs/render-model.md). 1: trace every
                                ray to `depth` */
+    uint8_t draft;          /* 0: every pixel is traced. 1..255: a draft
+                               render (adaptive undersampling, rt_draft.h):
+                               a coarse lattice of pixels is traced, and a
+                               pixel between only where its neighbours
+                               hit other objects or texture cells, differ
+                               in shadow or by more than this many 8-bit
+                               levels, or may hide a thin object; the rest
+                               is their mean (docs/effects.md) */
 } rt_options;
 
 /* Ray and test counters. The renderer adds to them and never resets them,
@@ -45,6 +53,9 @@ typedef struct {
     uint64_t tests;      /* ray-object intersection tests */
     uint64_t cut;        /* reflected and refracted rays left untraced as
                             too faint (rt_options.trace_all) */
+    uint64_t interpolated; /* pixels whose colour is the mean of traced
+                              neighbours, without a ray of their own
+                              (rt_options.draft); the rest were traced */
 } rt_stats;
 
 /* Receives finished row y. `row` holds rt_row_bytes() bytes and belongs to
@@ -59,7 +70,8 @@ void rt_options_from_scene(rt_options *o, const rt_scene *s);
 size_t rt_row_bytes(const rt_options *o);
 
 /* Bytes the caller's row buffer must hold: rt_row_bytes(), plus 9 * width
- * of scratch when adaptive anti-aliasing is on. */
+ * of scratch when adaptive anti-aliasing is on, plus about 25 * width for
+ * a draft render (its lattice rows). */
 size_t rt_buffer_bytes(const rt_options *o);
 
 /* Renders rows y0 <= y < y1 (top row is 0) into row_buf (rt_buffer_bytes()

@@ -164,6 +164,8 @@ RT_NOINLINE static rt_rgb trace(const rt_tracer *tr, rt_work *wk,
     uint8_t part = 0;
     if (!rt_nearest(tr, wk, r, skip, from, &t, &oi, &part))
         return tr->scene->background;
+    if (wk->sign) /* a draft render tells its pixels apart by their hits */
+        rt_draft_sign_hit(wk, tr->scene, oi, r, t, w);
     return shade(tr, wk, r, depth, w, oi, part, t);
 }
 
@@ -184,4 +186,28 @@ rt_rgb rt_trace_camera(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     if (!rt_nearest_camera(tr, wk, r, rs, x, &t, &oi, &part))
         return tr->scene->background;
     return shade(tr, wk, r, 0, FX_ONE, oi, part, t);
+}
+
+int rt_probe_camera(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
+                    const rt_row_spans *rs, unsigned x, rt_hit *h)
+{
+    h->obj = RT_NO_OBJECT;
+    h->part = 0;
+    if (rt_nearest_camera(tr, wk, r, rs, x, &h->t, &h->obj, &h->part))
+        return 1;
+    h->obj = RT_NO_OBJECT;
+    h->t = FX_MAX;
+    return 0;
+}
+
+rt_rgb rt_shade_camera(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
+                       const rt_hit *h)
+{
+    if (RT_CUTOFF)
+        wk->budget = tr->cut_budget; /* a new sample */
+    if (h->obj == RT_NO_OBJECT)
+        return tr->scene->background;
+    if (wk->sign)
+        rt_draft_sign_hit(wk, tr->scene, h->obj, r, h->t, FX_ONE);
+    return shade(tr, wk, r, 0, FX_ONE, h->obj, h->part, h->t);
 }

@@ -40,6 +40,9 @@ typedef struct {
      * then taken off (rt_cutoff.h). */
     uint32_t budget;
     uint16_t blocker[RT_MAX_LIGHTS]; /* per light: what last blocked it */
+    uint8_t sign;  /* 1: each hit is folded into sig (a draft render) */
+    uint32_t sig;  /* the current sample's hits (rt_draft_sign_hit) */
+    fx_t sign_w;   /* rays of this weight or less are not signed */
 } rt_work;
 
 /* Sets up *tr for rendering scene s (valid: rt_render_rows checks it)
@@ -47,7 +50,7 @@ typedef struct {
  * bounds, the sealed glass and the direction grids. */
 void rt_tracer_init(rt_tracer *tr, const rt_scene *s, const rt_options *o);
 
-/* Empty work: no blockers known, a budget of 0. */
+/* Empty work: no blockers known, a budget of 0, no signing. */
 void rt_work_init(rt_work *wk, rt_stats *stats);
 
 /* Adds one to a counter of wk's rt_stats, if counting (RT_STATS). */
@@ -71,5 +74,30 @@ rt_rgb rt_trace(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
  * cut-off budget. Same result as rt_trace (depth 0, nothing skipped). */
 rt_rgb rt_trace_camera(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
                        const rt_row_spans *rs, unsigned x);
+
+/* The nearest hit of a camera ray (rt_probe_camera). */
+typedef struct {
+    fx_t t;       /* distance along the ray; FX_MAX for none */
+    uint16_t obj; /* object index, RT_NO_OBJECT for none */
+    uint8_t part;
+} rt_hit;
+
+/* The first half of rt_trace_camera: the nearest hit of camera ray r of
+ * pixel column x among the row's spans, into *h. Returns 1 on a hit. */
+int rt_probe_camera(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
+                    const rt_row_spans *rs, unsigned x, rt_hit *h);
+
+/* The second half: the colour of camera ray r with nearest hit *h (from
+ * rt_probe_camera); starts a new sample's cut-off budget. Together the
+ * two give rt_trace_camera's colour. */
+rt_rgb rt_shade_camera(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
+                       const rt_hit *h);
+
+/* Folds the hit at distance t along r on object oi, of a ray of weight w,
+ * into wk->sig: the object and, if its material has a texture, the cell
+ * (rt_draft.c); hits too faint to matter are left out. The tracer calls it
+ * only when wk->sign is set. */
+void rt_draft_sign_hit(rt_work *wk, const rt_scene *s, unsigned oi,
+                       const rt_ray *r, fx_t t, fx_t w);
 
 #endif /* RT_TRACE_H */

@@ -122,6 +122,23 @@ done
 grep -qE '^rays_cut [1-9]' "$tmp/err" && ok || bad "the seed cut no rays"
 expect 0 '^rays_cut 0$' -- "$FT" -q --stats --trace-all -W 40 -H 30 -o "$tmp/t.ppm" "$SEED"
 cmp -s "$tmp/s.ppm" "$tmp/t.ppm" && bad "--trace-all rendered the same bytes" || ok
+# Draft renders: --stats splits the pixels into traced and interpolated;
+# threads give the same bytes; bad thresholds and the reference refuse.
+expect 0 '^traced_pixels 1200$' -- "$FT" -q --stats -W 40 -H 30 -o "$tmp/s.ppm" "$SEED"
+grep -q '^interpolated_pixels 0$' "$tmp/err" && ok || bad "a full render interpolated pixels"
+expect 0 '^interpolated_pixels [1-9]' -- "$FT" -q --stats --draft 64 -W 80 -H 60 -o "$tmp/d1.ppm" "$SEED"
+awk '/^traced_pixels/{t=$2} /^interpolated_pixels/{i=$2} END{exit !(t + i == 4800 && t > 0)}' \
+    "$tmp/err" && ok || bad "--draft: traced and interpolated pixels do not add up to 4800"
+expect 0 '' -- "$FT" -q --draft 64 -j 3 -W 80 -H 60 -o "$tmp/d3.ppm" "$SEED"
+cmp -s "$tmp/d1.ppm" "$tmp/d3.ppm" && ok || bad "--draft -j 3 differs from -j 1"
+expect 0 '' -- "$FT" -q --draft 64 -s 4 --adaptive 8 -j 2 -W 80 -H 60 -o "$tmp/d4.ppm" "$SEED"
+expect 0 '' -- "$FT" -q --draft 64 -s 4 --adaptive 8 -W 80 -H 60 -o "$tmp/d5.ppm" "$SEED"
+cmp -s "$tmp/d4.ppm" "$tmp/d5.ppm" && ok || bad "--draft --adaptive -j 2 differs from -j 1"
+for v in 0 256 -3 x ''; do
+    expect 2 '(--draft must be from|needs a whole number)' -- "$FT" --draft "$v" "$SEED"
+done
+expect 2 'needs a value' -- "$FT" "$SEED" --draft
+expect 2 '--draft is a fixed-point core mode' -- "$FT" -q --reference --draft 8 -o "$tmp/r.ppm" "$SEED"
 expect 0 '' -- "$FT" -q -W 40 -H 30 -o "$tmp/a.png" "$SEED"
 head -c 8 "$tmp/a.png" | od -An -tx1 | grep -q '89 50 4e 47 0d 0a 1a 0a' && ok || bad "PNG signature"
 # The extension picks the format in any letter case, as the name check

@@ -4,9 +4,9 @@
 # both scene modes (mk/firmware.mk): rendering on the device gives the same
 # bytes as the host, for the seed scene as tables (PRUNE=1, the default: no
 # parser linked) and for one other scene as text parsed on the device
-# (PRUNE=0), at 48x36; each board's instruction counter is exact (a loop
-# of known length); a stack overflow ends the run with a fault code instead
-# of hanging it; a bad scene fails a PRUNE=1 build on the host with its
+# (PRUNE=0), and for a draft render of the seed (DRAFT=64), at 48x36;
+# each board's instruction counter is exact (a loop of known length); a
+# stack overflow ends the run with a fault code instead of hanging it; a bad scene fails a PRUNE=1 build on the host with its
 # file:line:col, and a PRUNE=0 firmware exits 2 with a message; the M0
 # images use no soft-float helpers; and the micro:bit build, parser and
 # rt_scene in RAM, fits in its 16 KB and renders the seed scene at 320x240.
@@ -136,6 +136,10 @@ run_board() {
         "$tmp/seed.ppm"
     render "$(basename "$OTHER" .scene) ${W}x$H text" "$OTHER" $W $H \
         "$tmp/other.ppm" "$TIMEOUT" PRUNE=0
+    # A draft render (rt_options.draft) takes the same decisions on
+    # every board: the same bytes as the host's draft.
+    render "$(basename "$SEED" .scene) ${W}x$H draft 64" "$SEED" $W $H \
+        "$tmp/seed-draft.ppm" "$TIMEOUT" DRAFT=64
 
     case $b in
     an385)
@@ -241,9 +245,11 @@ if [ ! -x "$FT" ]; then
     echo "0 passed, 1 failed"
     exit 1
 fi
-for r in "seed $SEED $W $H" "other $OTHER $W $H" "seed320 $SEED 320 240"; do
+for r in "seed $SEED $W $H" "other $OTHER $W $H" "seed320 $SEED 320 240" \
+    "seed-draft $SEED $W $H --draft 64"; do
     set -- $r
-    if ! "$FT" -q -W "$3" -H "$4" -o "$tmp/$1.ppm" "$2" 2>"$tmp/host.err"
+    if ! "$FT" -q -W "$3" -H "$4" -o "$tmp/$1.ppm" "${@:5}" "$2" \
+        2>"$tmp/host.err"
     then
         echo "FAILED: host render of $2: $(cat "$tmp/host.err")"
         echo "0 passed, 1 failed"

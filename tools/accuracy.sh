@@ -15,7 +15,14 @@
 # reference at 16 spp and the scene's depth); the reference renderer
 # itself as firmware in soft double and soft float (bench/softref); and
 # the seed's picture and error heat map at each precision
-# (docs/img/accuracy/).
+# (docs/img/accuracy/). For the default also draft renders (--draft T,
+# DRAFT=T) of every scene at each threshold of DRAFTS, with the share of
+# interpolated pixels, and the seed's draft picture and error map.
+#
+#   tools/accuracy.sh           every row (make accuracy)
+#   tools/accuracy.sh --draft   only the draft rows: measures them again
+#                               and puts them in place of the old ones in
+#                               docs/accuracy-data.tsv, keeping the rest
 #
 # Environment: ACC_JOBS (QEMU runs at once, default 2), ACC_RUNS (host
 # timing runs, default 7), ACC_WIDTH / ACC_HEIGHT (default 320 x 240).
@@ -39,6 +46,10 @@ DEFAULT=30
 KNOBS="seed-s4 4 0
 seed-s16 16 0
 seed-a8 16 8"
+# Draft thresholds, each rendered for every scene as tag "<scene>-t<T>".
+DRAFTS="32 64 128"
+ONLY_DRAFT=0
+[ "${1:-}" = --draft ] && ONLY_DRAFT=1
 
 # ---- One measurement job (run in parallel by xargs) -------------------------
 
@@ -51,11 +62,12 @@ log_counts() {
 # after the other in one build directory (only the scene and main.c
 # rebuild).
 job_fw() {
-    local board=$1 u=$2 dir=$WORK/fw-$1-u$2 tag scene spp ad
-    while read -r tag scene spp ad; do
+    local board=$1 u=$2 dir=$WORK/fw-$1-u$2 tag scene spp ad dr
+    while read -r tag scene spp ad dr; do
         if ! $MK -s qemu BOARD="$board" FW_BUILD="$dir" \
             FW_DEFS="-DRT_UNIT_BITS=$u" SCENE="$scene" WIDTH="$W" \
-            HEIGHT="$H" SPP="$spp" ADAPTIVE="$ad" >"$dir.$tag.out" 2>&1; then
+            HEIGHT="$H" SPP="$spp" ADAPTIVE="$ad" DRAFT="${dr:-0}" \
+            >"$dir.$tag.out" 2>&1; then
             echo "accuracy: $board u$u $tag failed:" >&2
             tail -n 5 "$dir.$tag.out" >&2
             return 1
@@ -81,10 +93,19 @@ job_sr() {
     done
 }
 
-# The configurations of a setting: "tag scene-file spp adaptive". Every
-# setting renders the scenes; the default also the work knobs.
+# The configurations of a setting: "tag scene-file spp adaptive draft".
+# Every setting renders the scenes; the default also the work knobs and
+# the drafts (with --draft, only those).
 configs() {
-    local s d tag spp ad
+    local s d t tag spp ad
+    if [ "$1" = "$DEFAULT" ]; then
+        for s in $SCENES; do
+            for t in $DRAFTS; do
+                echo "$s-t$t scenes/$s.scene 1 0 $t"
+            done
+        done
+    fi
+    [ "$ONLY_DRAFT" = 1 ] && return
     for s in $SCENES; do
         echo "$s scenes/$s.scene 1 0"
     done
@@ -99,6 +120,7 @@ configs() {
 }
 
 if [ "${1:-}" = --job ]; then
+    [ "${2:-}" = --draft ] && { ONLY_DRAFT=1; shift; }
     shift
     kind=$1
     shift
@@ -128,6 +150,7 @@ for d in 0 1 2 3; do
     }
 done
 
+[ "$ONLY_DRAFT" = 1 ] && BITS=$DEFAULT
 echo "accuracy: host builds"
 for u in $BITS; do
     $MK -s -j"$JOBS" SANITIZE= HOST_BUILD=build/posix-u$u \
@@ -139,6 +162,7 @@ REF=build/posix-u$DEFAULT/fixtrace
 # seed-a8, seed-d2, glass, ...).
 tag_scene() {
     case $1 in
+    *-t*) echo "scenes/${1%%-t*}.scene" ;;
     seed-d*) echo "$WORK/scenes/$1.scene" ;;
     seed-*) echo scenes/seed.scene ;;
     *) echo "scenes/$1.scene" ;;
@@ -157,17 +181,32 @@ tag_ad() {
     *) echo 0 ;;
     esac
 }
+tag_draft() {
+    case $1 in
+    *-t*) echo "${1##*-t}" ;;
+    *) echo 0 ;;
+    esac
+}
 # The fixtrace options of a tag.
 tag_opts() {
     local o="-s $(tag_spp "$1")"
     [ "$(tag_ad "$1")" -gt 0 ] && o="$o --adaptive $(tag_ad "$1")"
+    [ "$(tag_draft "$1")" -gt 0 ] && o="$o --draft $(tag_draft "$1")"
     echo "$o"
 }
 
 echo "accuracy: host renders and references"
-for tag in $SCENES seed-s4 seed-s16 seed-d0 seed-d1 seed-d2 seed-d3; do
+REFS="$SCENES seed-s4 seed-s16 seed-d0 seed-d1 seed-d2 seed-d3"
+[ "$ONLY_DRAFT" = 1 ] && REFS="$SCENES seed-s16"
+for tag in $REFS; do
     $REF -q --reference -W "$W" -H "$H" -s "$(tag_spp "$tag")" \
         -o "$WORK/img/ref-$tag.ppm" "$(tag_scene "$tag")"
+done
+# A draft is held to the full render's reference.
+for s in $SCENES; do
+    for t in $DRAFTS; do
+        cp "$WORK/img/ref-$s.ppm" "$WORK/img/ref-$s-t$t.ppm"
+    done
 done
 # Adaptive anti-aliasing is a fixed-point shortcut to 16 spp: its
 # reference is the full 16 spp one.
@@ -177,13 +216,16 @@ IDEAL=$WORK/img/ref-seed-s16.ppm
 for u in $BITS; do
     for tag in $(configs "$u" | awk '{print $1}'); do
         # shellcheck disable=SC2046
-        build/posix-u$u/fixtrace -q -W "$W" -H "$H" $(tag_opts "$tag") \
-            -o "$WORK/img/host-$u-$tag.ppm" "$(tag_scene "$tag")"
+        build/posix-u$u/fixtrace -q --stats -W "$W" -H "$H" \
+            $(tag_opts "$tag") -o "$WORK/img/host-$u-$tag.ppm" \
+            "$(tag_scene "$tag")" 2>"$WORK/res/stats-$u-$tag"
     done
 done
 
 echo "accuracy: firmware runs under QEMU ($JOBS at once)"
-{
+if [ "$ONLY_DRAFT" = 1 ]; then
+    printf '%s\n' "--draft fw m0 $DEFAULT" "--draft fw an385 $DEFAULT"
+else
     for u in $DEFAULT 16 20 24; do
         echo "fw m0 $u"
         echo "fw an385 $u"
@@ -193,7 +235,7 @@ echo "accuracy: firmware runs under QEMU ($JOBS at once)"
     echo "sr m0-f32 seed"
     echo "sr m3-f32 $SCENES"
     echo "sr m4f-f32 $SCENES"
-} | xargs -P "$JOBS" -L 1 bash "$0" --job
+fi | xargs -P "$JOBS" -L 1 bash "$0" --job
 
 # ---- Host time: nothing else runs now; still noisy ----------------------------
 
@@ -219,6 +261,7 @@ for u in $BITS; do
     done
 done
 for tag in $SCENES; do
+    [ "$ONLY_DRAFT" = 1 ] && break
     host_time "$REF" "$tag" --reference >"$WORK/res/host-ref-$tag"
 done
 
@@ -239,7 +282,7 @@ ipp() { # instructions per pixel from a result file, or -
 
 # One row per line, tab-separated: label scene spp depth m3 m0 m4f host
 # psnr maxerr bad identical(firmware == host image) adaptive
-# psnr-against-the-ideal (seed only)
+# psnr-against-the-ideal (seed only) draft interpolated-percent
 TSV=$WORK/results.tsv
 : >"$TSV"
 depth_of() {
@@ -260,15 +303,19 @@ for u in $BITS; do
         for b in an385 m0; do
             cmp -s "$WORK/img/fw-$b-$u-$tag.ppm" "$img" || same=no
         done
-        printf '%s\t%s\t%s\t%s\t%s\t%s\t-\t%s\t%s\t%s\t%s\t%s\n' \
+        interp=$(awk -v p=$((W * H)) '/^interpolated_pixels /{
+            printf "%.1f", 100 * $2 / p }' "$WORK/res/stats-$u-$tag")
+        printf '%s\t%s\t%s\t%s\t%s\t%s\t-\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' \
             "$u" "${tag%%-*}" "$(tag_spp "$tag")" \
             "$(depth_of "$tag")" "$(ipp "fw-an385-$u-$tag")" \
             "$(ipp "fw-m0-$u-$tag")" "$(res "host-$u-$tag")" \
             "$(echo "$e" | tr ' ' '\t')" "$same" "$(tag_ad "$tag")" \
-            "$(ideal "$img" "$tag")" >>"$TSV"
+            "$(ideal "$img" "$tag")" "$(tag_draft "$tag")" \
+            "${interp:-0.0}" >>"$TSV"
     done
 done
 for prec in f32 f64; do
+    [ "$ONLY_DRAFT" = 1 ] && break
     for s in $SCENES; do
         e=$(errors "$WORK/img/sr-m3-$prec-$s.ppm" "$WORK/img/ref-$s.ppm")
         m0=-
@@ -279,7 +326,7 @@ for prec in f32 f64; do
         [ "$prec" = f64 ] && host=$(res "host-ref-$s")
         label="reference, float32"
         [ "$prec" = f64 ] && label="reference, double"
-        printf '%s\t%s\t1\t%s\t%s\t%s\t%s\t%s\t%s\t-\t0\t%s\n' \
+        printf '%s\t%s\t1\t%s\t%s\t%s\t%s\t%s\t%s\t-\t0\t%s\t0\t0.0\n' \
             "$label" "$s" "$(depth_of "$s")" "$(ipp "sr-m3-$prec-$s")" \
             "$m0" "$m4" "$host" "$(echo "$e" | tr ' ' '\t')" \
             "$(ideal "$WORK/img/sr-m3-$prec-$s.ppm" "$s")" >>"$TSV"
@@ -288,6 +335,7 @@ done
 # The M4F float32 image must be the M3 float32 image (same IEEE single).
 m4same=yes
 for s in $SCENES; do
+    [ "$ONLY_DRAFT" = 1 ] && break
     cmp -s "$WORK/img/sr-m4f-f32-$s.ppm" "$WORK/img/sr-m3-f32-$s.ppm" ||
         m4same=no
 done
@@ -297,6 +345,7 @@ done
 if command -v pnmtopng >/dev/null && command -v pamfunc >/dev/null; then
     mkdir -p docs/img/accuracy
     for u in $BITS; do
+        [ "$ONLY_DRAFT" = 1 ] && break
         cp "$WORK/img/host-$u-seed.ppm" "$WORK/host/seed-u$u.ppm"
         $REF compare "$WORK/img/host-$u-seed.ppm" "$WORK/img/ref-seed.ppm" \
             --diff "$WORK/host/diff-u$u.ppm" >/dev/null || true
@@ -307,14 +356,31 @@ if command -v pnmtopng >/dev/null && command -v pamfunc >/dev/null; then
         pamfunc -multiplier=8 "$WORK/host/diff-u$u.ppm" |
             pnmtopng -compression 9 >docs/img/accuracy/diff-u$u.png
     done
+    # The seed's draft at the middle threshold, and its error.
+    t=$(echo $DRAFTS | awk '{ print $(int((NF + 1) / 2)) }')
+    $REF compare "$WORK/img/host-$DEFAULT-seed-t$t.ppm" \
+        "$WORK/img/ref-seed.ppm" --diff "$WORK/host/diff-draft.ppm" \
+        >/dev/null || true
+    pnmtopng -compression 9 "$WORK/img/host-$DEFAULT-seed-t$t.ppm" \
+        >docs/img/accuracy/seed-draft$t.png
+    pamfunc -multiplier=8 "$WORK/host/diff-draft.ppm" |
+        pnmtopng -compression 9 >docs/img/accuracy/diff-draft$t.png
 else
     echo "accuracy: pnmtopng (netpbm) not found: pictures not updated" >&2
 fi
 
 elapsed=$((SECONDS - start))
-{
-    echo "# $m4same $W $H $RUNS $elapsed"
-    cat "$TSV"
-} >docs/accuracy-data.tsv
+if [ "$ONLY_DRAFT" = 1 ]; then
+    # The other rows and the header stay; the draft rows are replaced.
+    { head -n 1 docs/accuracy-data.tsv
+      grep -v '^#' docs/accuracy-data.tsv | awk -F'\t' '($15 + 0) == 0'
+      cat "$TSV"; } >"$WORK/data.tsv"
+    mv "$WORK/data.tsv" docs/accuracy-data.tsv
+else
+    {
+        echo "# $m4same $W $H $RUNS $elapsed"
+        cat "$TSV"
+    } >docs/accuracy-data.tsv
+fi
 bash tools/accuracy_report.sh
 echo "accuracy: wrote docs/accuracy.md, its charts and data in ${elapsed} s"

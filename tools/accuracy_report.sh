@@ -10,7 +10,8 @@
 # The data's first line is "# m4f_same width height runs seconds"; then
 # one row per measurement, tab-separated: label (unit bits, or
 # "reference, ...") scene spp depth m3 m0 m4f host psnr maxerr bad
-# fw=host adaptive psnr-vs-ideal.
+# fw=host adaptive psnr-vs-ideal draft interpolated-percent (the last two
+# missing means 0: rows written before draft renders).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 DATA=docs/accuracy-data.tsv
@@ -35,8 +36,9 @@ DEF=30
 # first matching row (scene seed, 1 spp, not adaptive, any depth).
 field() {
     awk -F'\t' -v c="$1" -v l="$2" -v s="${3:-seed}" -v sp="${4:-1}" \
-        -v ad="${5:-0}" -v dp="${6:-}" '$1 == l && $2 == s && $3 == sp &&
-        $13 == ad && (dp == "" || $4 == dp) { print $c; exit }' "$TSV"
+        -v ad="${5:-0}" -v dp="${6:-}" -v dr="${7:-0}" '$1 == l && $2 == s &&
+        $3 == sp && $13 == ad && (dp == "" || $4 == dp) && ($15 + 0) == dr {
+        print $c; exit }' "$TSV"
 }
 calc() { awk "BEGIN { printf \"$1\", $2 }"; }
 # 12345.6 -> 12,345.6
@@ -174,7 +176,7 @@ END {
 # The precision ladder on the seed (M3), with the float references; the
 # M4F's float32 is shown hollow, for comparison.
 PTS=$(awk -F'\t' '$2 == "seed" && $3 == 1 && $13 == 0 && $4 == 5 &&
-    $5 != "-" && !seen[$1]++ {
+    $5 != "-" && ($15 + 0) == 0 && !seen[$1]++ {
     lab = ($1 ~ /^[0-9]+$/) ? $1 " unit bits" ($1 == 30 ? " (default)" : "") : $1
     printf "%s\t%s\t%s\n", lab, $5, ($9 == "inf" ? 1e9 : $9) }' "$TSV")
 if [ -n "$s32_m4" ] && [ "$s32_m4" != "-" ]; then
@@ -191,7 +193,8 @@ chart "$PTS" "Cost against accuracy: scenes/seed.scene, 1 spp, by precision of u
 
 # The work knobs of the default, against the ideal image.
 PTS2=$(awk -F'\t' '$1 == 30 && $2 == "seed" {
-    lab = $3 " spp" ($13 > 0 ? ", adaptive " $13 : "") ", depth " $4
+    lab = $3 " spp" ($13 > 0 ? ", adaptive " $13 : "") \
+        (($15 + 0) > 0 ? ", draft " $15 : "") ", depth " $4
     printf "%s\t%s\t%s\n", lab, $5, ($14 == "inf" ? 1e9 : $14) }' "$TSV")
 FRONT2=$(echo "$PTS2" | frontier)
 front2_list=$(echo "$FRONT2" | paste -sd ';' - | sed 's/;/; /g')
@@ -211,8 +214,8 @@ table1=$(awk -F'\t' "$TABFN"'
 BEGIN { print "| unit bits | scene | M3 instr/px | M0 instr/px | M4F instr/px |" \
     " host µs/px (noisy) | PSNR dB | max err | > 2/255 | fw = host |"
     print "|---|---|--:|--:|--:|--:|--:|--:|--:|:-:|" }
-$3 == 1 && $13 == 0 && ($1 !~ /^[0-9]+$/ || $2 != "seed" || $4 == 5) &&
-    !seen[$1 "/" $2]++ {
+$3 == 1 && $13 == 0 && ($15 + 0) == 0 &&
+    ($1 !~ /^[0-9]+$/ || $2 != "seed" || $4 == 5) && !seen[$1 "/" $2]++ {
   lab = ($1 == 30) ? "**30 (default)**" : $1
   printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s%% | %s |\n",
       lab, $2, commas($5), commas($6), commas($7), ($8 == "-" ? "–" : $8),
@@ -222,10 +225,44 @@ BEGIN { print "| spp | adaptive | depth | M3 instr/px | M0 instr/px |" \
     " host µs/px (noisy) | PSNR dB, same spp and depth | PSNR dB, ideal |" \
     " fw = host |"
     print "|--:|--:|--:|--:|--:|--:|--:|--:|:-:|" }
-$1 == 30 && $2 == "seed" {
+$1 == 30 && $2 == "seed" && ($15 + 0) == 0 {
   printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", $3,
       ($13 > 0 ? $13 : "–"), $4, commas($5), commas($6), $8, db($9),
       db($14), $12 }' "$TSV")
+
+# Draft renders: each scene at each threshold, with the default's cost
+# beside it.
+table3=$(awk -F'\t' "$TABFN"'
+BEGIN { print "| scene | draft T | M3 instr/px | M3 fewer | M0 instr/px |" \
+    " M0 fewer | PSNR dB | max err | > 2/255 | interpolated | fw = host |"
+    print "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|:-:|" }
+$1 == 30 && $3 == 1 && $13 == 0 && ($15 + 0) == 0 && !(($2) in d3) {
+    d3[$2] = $5; d0[$2] = $6 }
+$1 == 30 && ($15 + 0) > 0 { n++; r[n] = $0 }
+END { for (i = 1; i <= n; i++) { split(r[i], c, "\t")
+  printf "| %s | %s | %s | %.2fx | %s | %.2fx | %s | %s | %s%% | %s%% | %s |\n",
+      c[2], c[15], commas(c[5]), d3[c[2]] / c[5], commas(c[6]),
+      d0[c[2]] / c[6], db(c[9]), c[10], c[11], c[16], c[12] } }' "$TSV")
+# The target: the seed at 2x fewer M3 instructions at 38 dB or more, and
+# glass and mirrors at 35 dB or more at that threshold.
+draft_t=$(awk -F'\t' '$1 == 30 && $3 == 1 && $13 == 0 && ($15 + 0) == 0 &&
+    $2 == "seed" && !d { d = $5 }
+    $1 == 30 && $2 == "seed" && ($15 + 0) > 0 && d / $5 >= 2 && $9 >= 38 &&
+    (best == "" || $15 < best) { best = $15 } END { print best }' "$TSV")
+if [ -n "$draft_t" ]; then
+    t_draft="met at T = $draft_t: $(field 5 $DEF seed 1 0 5 "$draft_t") M3 instructions per pixel against $(field 5 $DEF seed 1 0 5) ($(calc %.2f "$(field 5 $DEF seed 1 0 5) / $(field 5 $DEF seed 1 0 5 "$draft_t")")x; M0 $(calc %.2f "$(field 6 $DEF seed 1 0 5) / $(field 6 $DEF seed 1 0 5 "$draft_t")")x) at $(field 9 $DEF seed 1 0 5 "$draft_t") dB"
+    for s in glass mirrors; do
+        p=$(field 9 $DEF "$s" 1 0 "" "$draft_t")
+        if [ -n "$p" ] && ge "$p" 35; then v=met; else v=missed; fi
+        t_draft="$t_draft; $s ${p:-–} dB ($v)"
+    done
+else
+    draft_t=64
+    t_draft="missed"
+fi
+draft_pic=$(awk -F'\t' -v t="$draft_t" '$1 == 30 && $2 == "seed" && $15 == t {
+    printf "| draft %s: %s dB | ![seed, draft %s](img/accuracy/seed-draft%s.png) | ![error, draft %s](img/accuracy/diff-draft%s.png) |\n",
+        t, $9, t, t, t, t; exit }' "$TSV")
 
 # The pictures, with the PSNR of each.
 pics=$(awk -F'\t' '$2 == "seed" && $3 == 1 && $13 == 0 && $4 == 5 &&
@@ -293,6 +330,7 @@ agree):
 | unit bits | image | error |
 |---|---|---|
 ${pics}
+${draft_pic}
 
 ## The work knobs
 
@@ -308,6 +346,24 @@ ${table2}
 
 ![work against the ideal image](accuracy-work.svg)
 
+## Draft renders
+
+A draft (\`--draft T\`, firmware \`DRAFT=T\`, \`rt_options.draft\`;
+docs/effects.md) traces every 4th pixel of every 4th row, then, level by
+level, each pixel between only where its neighbours disagree: other
+objects or texture cells along their paths, other shadows, colours more
+than T levels apart, or an object the row's culling allows that could
+hide between them; the rest is the mean of the neighbours. PSNR, errors
+and "fw = host" as in the first table, against the reference of the full
+render; "fewer" is the default's instructions per pixel (the first
+table) divided by the draft's; "interpolated" the share of pixels
+without a ray of their own (\`--stats\`).
+
+${table3}
+
+The seed's draft is a point on the chart of the work knobs above; its
+picture is the last row of the pictures' table.
+
 ## Which to use
 
 - **Every use: the default, 30 unit bits.** No precision is cheaper, and
@@ -317,6 +373,12 @@ ${table2}
   $(commas "$a8_m3") instructions per pixel on the M3 against
   $(commas "$s16_m3") for the full 16 spp, at ${a8_id} dB against the
   ideal image (16 spp: ${s16_id}).
+- **Quick previews and slow parts:** a draft, \`--draft ${draft_t}\`
+  (\`DRAFT=${draft_t}\`): $(commas "$(field 5 $DEF seed 1 0 5 "$draft_t")")
+  instructions per pixel on the M3 for the seed, at
+  $(field 9 $DEF seed 1 0 5 "$draft_t") dB against the reference. It saves
+  least where reflections and glass make most pixels differ from their
+  neighbours (the draft table).
 - **Previews:** 1 spp (${s1_id} dB against the ideal,
   $(commas "$d_m3") instructions per pixel), or a lower depth for scenes
   of mirrors and glass: depth 2 costs $(commas "$d2_m3") at ${d2_id} dB,
@@ -332,6 +394,9 @@ ${table2}
   M3): **${t_pareto}**. On the frontier: ${front_list}.
 - The default against the reference, 1 spp: ${targets}.
 - On the frontier of the work knobs: ${front2_list}.
+- A draft of the seed at half the default's M3 instructions or fewer, at
+  38 dB or more, with glass and mirrors at 35 dB or more:
+  **${t_draft}**.
 
 ## Reproducing a row
 
@@ -345,6 +410,9 @@ ${table2}
     make qemu BOARD=an385 FW_BUILD=build/accuracy/fw-an385-u16 \\
         FW_DEFS=-DRT_UNIT_BITS=16 SCENE=scenes/seed.scene WIDTH=${W} HEIGHT=${H} SPP=1
     make qemu BOARD=an385 SCENE=scenes/seed.scene WIDTH=${W} HEIGHT=${H} SPP=16 ADAPTIVE=8
+    tools/accuracy.sh --draft                       # only the draft rows
+    build/posix/fixtrace --stats --draft ${draft_t} -W ${W} -H ${H} -o d.ppm scenes/seed.scene
+    make qemu BOARD=m0 SCENE=scenes/seed.scene WIDTH=${W} HEIGHT=${H} DRAFT=${draft_t}
     make softref-qemu SR=m3-f64 SCENE=scenes/seed.scene WIDTH=${W} HEIGHT=${H} SPP=1
     make softref-qemu SR=m4f-f32 SCENE=scenes/seed.scene WIDTH=${W} HEIGHT=${H} SPP=1
 

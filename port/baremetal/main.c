@@ -26,8 +26,9 @@
  * an effect this build removed (docs/effects.md), 5 stack).
  *
  * The build generates fw_config.h with FW_SCENE_TABLES, FW_WIDTH,
- * FW_HEIGHT and FW_SPP (0 means "the scene's default") and FW_ADAPTIVE
- * (0, or the adaptive anti-aliasing threshold of rt_options).
+ * FW_HEIGHT and FW_SPP (0 means "the scene's default"), FW_ADAPTIVE
+ * (0, or the adaptive anti-aliasing threshold of rt_options) and FW_DRAFT
+ * (0, or the draft threshold of rt_options).
  */
 #include "port.h"
 #include "fw_config.h"
@@ -61,16 +62,22 @@ static rt_scene scene;
 #define FW_ROW_PIXELS RT_MAX_WIDTH
 #endif
 
-/* Bytes per pixel of the row buffer: the RGB888 row, plus three rows of
- * centre samples for adaptive anti-aliasing (rt_buffer_bytes()). */
-#if FW_ADAPTIVE > 0
-#define FW_BUF_PIXEL_BYTES 12
-#else
-#define FW_BUF_PIXEL_BYTES 3
+#ifndef FW_DRAFT
+#define FW_DRAFT 0
 #endif
 
+/* The row buffer (rt_buffer_bytes()): the RGB888 row, plus three rows of
+ * centre samples for adaptive anti-aliasing, plus the rows of a draft
+ * render's levels, a row and its flags (below 25 bytes a pixel and 128
+ * bytes) for the width asked for, or the widest row. */
+#define FW_BUF_PIXELS                                                         \
+    (FW_WIDTH > 0 && FW_WIDTH < FW_ROW_PIXELS ? FW_WIDTH : FW_ROW_PIXELS)
+#define FW_BUF_BYTES                                                          \
+    (FW_ROW_PIXELS * (FW_ADAPTIVE > 0 ? 12 : 3) +                             \
+     (FW_DRAFT > 0 ? FW_BUF_PIXELS * 25 + 128 : 0))
+
 /* In .bss, so `make size` accounts for it. */
-static uint8_t row_buf[FW_ROW_PIXELS * FW_BUF_PIXEL_BYTES];
+static uint8_t row_buf[FW_BUF_BYTES];
 
 static void log_status(const char *what, rt_status st)
 {
@@ -151,6 +158,7 @@ int main(void)
     if (FW_SPP > 0)
         opt.spp = FW_SPP;
     opt.adaptive = FW_ADAPTIVE;
+    opt.draft = FW_DRAFT;
     if (opt.width > RT_MAX_WIDTH || opt.height > RT_MAX_HEIGHT ||
         rt_buffer_bytes(&opt) > sizeof row_buf) {
         port_log("fixtrace: image ");
