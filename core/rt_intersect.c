@@ -10,6 +10,7 @@
  * size or distance: the discriminant keeps its precision for small and far
  * objects alike (rt_upright.h). See docs/numerics.md.
  */
+#include "rt_mesh.h"
 #include "rt_shape.h"
 
 /* Q16.16 ulps (plus 2^-(FX_UBITS + 1) of the size) by which quads reach
@@ -389,8 +390,9 @@ static int hit_box(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
  * them, where they are inlined as before (rt_upright.h). */
 #include "rt_upright.h"
 
-int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
-                 fx_t *t, uint8_t *part)
+/* The analytic shapes' tests, whose part fits a byte. */
+static int hit_shape(const rt_object *o, const rt_ray *r, fx_t tmin,
+                     fx_t tmax, fx_t *t, uint8_t *part)
 {
     /* A kind this build removed never hits (rendering refuses scenes
      * with one): its case falls out of the switch. */
@@ -425,7 +427,34 @@ int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
     return 0;
 }
 
-fx_dir3 rt_normal(const rt_object *o, fx_vec3 p, uint8_t part)
+/* A mesh: its bounding sphere when ray and mesh are near the origin
+ * (its margin covers the triangle test's rounding there, rt_mesh_check.c),
+ * then its hierarchy; part is the triangle. */
+RT_NOINLINE static int hit_mesh(const rt_object *o, const rt_ray *r,
+                                fx_t tmin, fx_t tmax, fx_t *t,
+                                uint16_t *part)
+{
+    int64_t tca, h[3];
+    uint64_t disc;
+    if (o->small && r->small &&
+        !bsphere(&o->bc, o->br, 1, r, tmin, tmax, &tca, &disc, h))
+        return 0;
+    return rt_mesh_hit(o, r, tmin, tmax, t, part);
+}
+
+int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
+                 fx_t *t, uint16_t *part)
+{
+    uint8_t p8;
+    if (o->kind == RT_MESH)
+        return RT_HAS_MESH && hit_mesh(o, r, tmin, tmax, t, part);
+    if (!hit_shape(o, r, tmin, tmax, t, &p8))
+        return 0;
+    *part = p8;
+    return 1;
+}
+
+fx_dir3 rt_normal(const rt_object *o, fx_vec3 p, uint16_t part)
 {
     switch (o->kind) {
     case RT_SPHERE: {
@@ -442,6 +471,8 @@ fx_dir3 rt_normal(const rt_object *o, fx_vec3 p, uint8_t part)
     }
     case RT_QUAD:
         return o->n;
+    case RT_MESH:
+        return rt_mesh_normal(o, p, part);
     case RT_BOX: {
         /* part is the axis of the face; its side is the one p lies on. */
         const fx_t pc[3] = { p.x, p.y, p.z };

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* rt_scene: scene defaults and the per-object constants the tracer uses. */
 #include "rt_libc.h"
-#include "rt_scene.h"
+#include "rt_mesh.h"
 
 /* Largest cone slope r / h: flatter cones lose the unit-frame precision
  * (k^2 must stay well inside Q16.16). */
@@ -161,6 +161,8 @@ static rt_status prepare_shape(rt_object *o)
             o->rinv = th > UINT32_MAX ? UINT32_MAX : (uint32_t)th;
         }
         return upright_bounds(o);
+    case RT_MESH:
+        return rt_mesh_prepare(o);
     default:
         return RT_ERR_ARG;
     }

@@ -6,7 +6,9 @@
  *
  * Geometry conventions: y is up. Cylinders and cones stand on their base
  * centre and extend along +y. Boxes are axis-aligned. A quad is a
- * parallelogram: corner + s*edge1 + t*edge2 for s, t in [0, 1].
+ * parallelogram: corner + s*edge1 + t*edge2 for s, t in [0, 1]. A mesh
+ * refers to triangles and their hierarchy in storage the caller owns
+ * (constant tables in flash on a device, rt_mesh.h).
  */
 #ifndef RT_SCENE_H
 #define RT_SCENE_H
@@ -87,6 +89,7 @@ typedef enum {
     RT_BOX,
     RT_CYLINDER,
     RT_CONE,
+    RT_MESH, /* triangles with a bounding volume hierarchy (rt_mesh.h) */
     RT_KIND_COUNT
 } rt_kind;
 
@@ -132,6 +135,8 @@ typedef struct {
                          fraction bits (2^42 / k, at most 2^32 - 1) */
     fx_t k;           /* cone: slope r / h with RT_FRAME_BITS fraction bits
                          (not Q16.16) */
+    const struct rt_mesh *mesh; /* mesh: its triangles, in world space, and
+                         their hierarchy (caller-owned, not copied) */
 } rt_object;
 
 typedef struct {
@@ -167,7 +172,8 @@ void rt_scene_init(rt_scene *s);
 
 /* Derives an object's constants and checks its shape. Returns RT_OK, or
  * RT_ERR_DEGENERATE for a zero radius, height, edge or extent, or for
- * parallel quad edges. */
+ * parallel quad edges, or RT_ERR_ARG for a mesh without one (rt_mesh.h
+ * states what a mesh must hold). */
 rt_status rt_object_prepare(rt_object *o);
 
 /* Derives a material's constants (reciprocal scales). Returns RT_OK, or

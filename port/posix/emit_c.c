@@ -92,7 +92,7 @@ static void put_uint(emitter *e, const char *name, unsigned long v)
 }
 
 static const char *const kind_name[RT_KIND_COUNT] = {
-    "RT_SPHERE", "RT_QUAD", "RT_BOX", "RT_CYLINDER", "RT_CONE"
+    "RT_SPHERE", "RT_QUAD", "RT_BOX", "RT_CYLINDER", "RT_CONE", "RT_MESH"
 };
 
 static const char *const texture_name[] = {
