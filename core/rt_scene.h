@@ -36,6 +36,7 @@
                               RT_MAX_LIGHTS)
 #define rt_scene_init RT_CFG(rt_scene_init)
 #define rt_parse RT_CFG(rt_parse)
+#define rt_parse_with_meshes RT_CFG(rt_parse_with_meshes)
 #define rt_render_rows RT_CFG(rt_render_rows)
 #define rt_options_from_scene RT_CFG(rt_options_from_scene)
 #define rt_scene_features RT_CFG(rt_scene_features)

@@ -14,6 +14,7 @@
 
 #include "cli_util.h"
 #include "harness.h"
+#include "mesh_obj.h"
 #include "rt_parse.h"
 #include "rt_render.h"
 
@@ -76,6 +77,7 @@ static const char *stored_sum(const char *stored, const char *name)
 int main(void)
 {
     static rt_scene scene;
+    static mesh_obj_ctx meshes;
     static uint8_t img[TW * TH * 3], img2[TW * TH * 3], img565[TW * TH * 2];
     char *names[256];
     int count = 0;
@@ -107,7 +109,12 @@ int main(void)
         char *text = cli_read_file(path, &len, err, sizeof err);
         if (!CHECK(text != NULL))
             continue;
-        rt_status st = rt_parse(text, len, &scene, &pe);
+        /* Meshes of the scene before are released; this one's are kept
+         * until the next (or the end). */
+        mesh_obj_free(&meshes);
+        mesh_obj_init(&meshes, path, stdout, 1);
+        rt_status st = mesh_obj_parse_scene(text, len, path, &scene, &pe,
+                                            &meshes);
         free(text);
         if (!CHECK(st == RT_OK)) {
             printf("    %s:%u:%u: %s\n", path, (unsigned)pe.line,
@@ -166,5 +173,6 @@ int main(void)
     if (out)
         fclose(out);
     free(stored);
+    mesh_obj_free(&meshes);
     return th_summary();
 }
