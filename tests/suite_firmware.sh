@@ -39,6 +39,8 @@ pick_other() {
     echo "$SEED"
 }
 OTHER=$(pick_other)
+# A scene with triangle meshes (tables in flash; refused as text).
+MESHES=${FW_TEST_MESHES:-scenes/meshes.scene}
 
 # Soft-float and soft-double helpers of libgcc (ARM EABI and generic names).
 SOFT_FLOAT='__aeabi_([fd][a-z0-9]+|[a-z0-9]+2[fd]z?)$|__(add|sub|mul|div|neg|cmp|eq|ne|lt|le|gt|ge|unord|extend|trunc)[sdtx]f[0-9]*$|__(float|fix)[a-z]*[sdtx]f[a-z0-9]*$'
@@ -136,6 +138,14 @@ run_board() {
         "$tmp/seed.ppm"
     render "$(basename "$OTHER" .scene) ${W}x$H text" "$OTHER" $W $H \
         "$tmp/other.ppm" "$TIMEOUT" PRUNE=0
+    # The meshes as tables in flash, on every board they fit.
+    if fw firmware SCENE="$MESHES" WIDTH=$W HEIGHT=$H ||
+        ! grep -q "overflowed" "$tmp/$b.log"; then
+        render "$(basename "$MESHES" .scene) ${W}x$H tables" "$MESHES" $W $H \
+            "$tmp/meshes.ppm"
+    else
+        res "SKIPPED: $b $MESHES: its meshes do not fit the flash"
+    fi
 
     case $b in
     an385)
@@ -159,6 +169,21 @@ run_board() {
             res ok
         else
             res "FAILED: $b missing scene: $(head -c 300 "$tmp/$b.log")"
+        fi
+        # A mesh in a scene parsed on the device: refused, with the way
+        # out (PRUNE=1 carries meshes as tables).
+        if fw firmware SCENE="$MESHES" PRUNE=0; then
+            want_rc=2 run_qemu "mesh as text" "$TIMEOUT" SCENE="$MESHES" \
+                PRUNE=0
+            if [ "$rc" = 2 ] && grep -q "PRUNE=1" "$tmp/$b.log"; then
+                res ok
+            else
+                res "FAILED: $b mesh as text: exit $rc, want 2 naming" \
+                    "PRUNE=1: $(head -c 300 "$tmp/$b.log")"
+            fi
+        else
+            res "FAILED: $b mesh as text: PRUNE=0 build failed:" \
+                "$(head -c 300 "$tmp/$b.log")"
         fi
         if fw firmware SCENE="$tmp/bad.scene" PRUNE=0; then
             want_rc=2 run_qemu "bad scene" "$TIMEOUT" \
@@ -241,7 +266,8 @@ if [ ! -x "$FT" ]; then
     echo "0 passed, 1 failed"
     exit 1
 fi
-for r in "seed $SEED $W $H" "other $OTHER $W $H" "seed320 $SEED 320 240"; do
+for r in "seed $SEED $W $H" "other $OTHER $W $H" "seed320 $SEED 320 240" \
+    "meshes $MESHES $W $H"; do
     set -- $r
     if ! "$FT" -q -W "$3" -H "$4" -o "$tmp/$1.ppm" "$2" 2>"$tmp/host.err"
     then
@@ -250,7 +276,7 @@ for r in "seed $SEED $W $H" "other $OTHER $W $H" "seed320 $SEED 320 240"; do
         exit 1
     fi
 done
-echo "scenes: $SEED and $OTHER"
+echo "scenes: $SEED, $OTHER and $MESHES"
 
 # Every board that has a mk/boards/<board>.mk, with the tools its
 # architecture needs.

@@ -433,7 +433,8 @@ static void set_base(mesh_obj_ctx *c, const char *scene_path)
     free(c->base_dir);
     c->base_dir = malloc(n + 1);
     if (c->base_dir) {
-        memcpy(c->base_dir, scene_path, n);
+        if (n > 0)
+            memcpy(c->base_dir, scene_path, n);
         c->base_dir[n] = '\0';
     }
 }
