@@ -176,7 +176,7 @@ static int take(int64_t t, fx_t tmin, fx_t *best)
 }
 
 static int hit_sphere(const rt_object *o, const rt_ray *r, fx_t tmin,
-                      fx_t tmax, fx_t *t, uint8_t *part)
+                      fx_t tmax, fx_t *t, uint16_t *part)
 {
     int64_t tca, h[3];
     uint64_t disc;
@@ -194,7 +194,7 @@ static int hit_sphere(const rt_object *o, const rt_ray *r, fx_t tmin,
 }
 
 static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
-                    fx_t tmax, fx_t *t, uint8_t *part)
+                    fx_t tmax, fx_t *t, uint16_t *part)
 {
     /* A flat quad (rt_object.flat) has n = (0, n.y, 0): the same sums
      * without the zero terms. */
@@ -320,7 +320,7 @@ static fx_t slab_t(const slab_inv *v, fx_t x)
 }
 
 static int hit_box(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
-                   fx_t *t, uint8_t *part)
+                   fx_t *t, uint16_t *part)
 {
     /* Arrays, not pointers into the structs: indexing &v.x past x is
      * undefined behaviour. */
@@ -390,9 +390,23 @@ static int hit_box(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
  * them, where they are inlined as before (rt_upright.h). */
 #include "rt_upright.h"
 
-/* The analytic shapes' tests, whose part fits a byte. */
-static int hit_shape(const rt_object *o, const rt_ray *r, fx_t tmin,
-                     fx_t tmax, fx_t *t, uint8_t *part)
+/* A mesh: its bounding sphere when ray and mesh are near the origin
+ * (its margin covers the triangle test's rounding there, rt_mesh_check.c),
+ * then its hierarchy; part is the triangle. */
+RT_NOINLINE static int hit_mesh(const rt_object *o, const rt_ray *r,
+                                fx_t tmin, fx_t tmax, fx_t *t,
+                                uint16_t *part)
+{
+    int64_t tca, h[3];
+    uint64_t disc;
+    if (o->small && r->small &&
+        !bsphere(&o->bc, o->br, 1, r, tmin, tmax, &tca, &disc, h))
+        return 0;
+    return rt_mesh_hit(o, r, tmin, tmax, t, part);
+}
+
+int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
+                 fx_t *t, uint16_t *part)
 {
     /* A kind this build removed never hits (rendering refuses scenes
      * with one): its case falls out of the switch. */
@@ -421,37 +435,14 @@ static int hit_shape(const rt_object *o, const rt_ray *r, fx_t tmin,
         if (!RT_HAS_UPRIGHT)
             break;
         return hit_upright(o, r, tmin, tmax, t, part);
+    case RT_MESH:
+        if (!RT_HAS_MESH)
+            break;
+        return hit_mesh(o, r, tmin, tmax, t, part);
     default:
         break;
     }
     return 0;
-}
-
-/* A mesh: its bounding sphere when ray and mesh are near the origin
- * (its margin covers the triangle test's rounding there, rt_mesh_check.c),
- * then its hierarchy; part is the triangle. */
-RT_NOINLINE static int hit_mesh(const rt_object *o, const rt_ray *r,
-                                fx_t tmin, fx_t tmax, fx_t *t,
-                                uint16_t *part)
-{
-    int64_t tca, h[3];
-    uint64_t disc;
-    if (o->small && r->small &&
-        !bsphere(&o->bc, o->br, 1, r, tmin, tmax, &tca, &disc, h))
-        return 0;
-    return rt_mesh_hit(o, r, tmin, tmax, t, part);
-}
-
-int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
-                 fx_t *t, uint16_t *part)
-{
-    uint8_t p8;
-    if (o->kind == RT_MESH)
-        return RT_HAS_MESH && hit_mesh(o, r, tmin, tmax, t, part);
-    if (!hit_shape(o, r, tmin, tmax, t, &p8))
-        return 0;
-    *part = p8;
-    return 1;
 }
 
 fx_dir3 rt_normal(const rt_object *o, fx_vec3 p, uint16_t part)
@@ -472,6 +463,8 @@ fx_dir3 rt_normal(const rt_object *o, fx_vec3 p, uint16_t part)
     case RT_QUAD:
         return o->n;
     case RT_MESH:
+        if (!RT_HAS_MESH)
+            return o->n; /* never hit in this build */
         return rt_mesh_normal(o, p, part);
     case RT_BOX: {
         /* part is the axis of the face; its side is the one p lies on. */

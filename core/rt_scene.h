@@ -90,7 +90,8 @@ typedef enum {
     RT_BOX,
     RT_CYLINDER,
     RT_CONE,
-    RT_MESH, /* triangles with a bounding volume hierarchy (rt_mesh.h) */
+    /* Triangles with a bounding volume hierarchy (rt_mesh.h). */
+    RT_MESH,
     RT_KIND_COUNT
 } rt_kind;
 
@@ -112,6 +113,9 @@ typedef struct {
     uint8_t flat;     /* derived, quads: 1 if n is along y, pu along z and
                          pv along x; 2 if n along y, pu along x, pv along z
                          (the intersection skips the zero terms); else 0 */
+    int8_t ushift;    /* derived: cylinders and cones are solved in the
+                         frame centred on bc and scaled by 2^-ushift
+                         (exact), which brings br into (1/2, 1] */
     fx_vec3 a;        /* sphere: centre; quad: corner; box: min;
                          cylinder, cone: base centre */
     fx_vec3 b;        /* quad: edge1; box: max */
@@ -126,9 +130,10 @@ typedef struct {
                          quad, whose dist is exact, uses it */
     fx_vec3 bc;       /* bounding sphere centre */
     fx_t br;          /* bounding sphere radius */
-    int8_t ushift;    /* cylinders and cones are solved in the frame centred
-                         on bc and scaled by 2^-ushift (exact), which brings
-                         br into (1/2, 1] */
+    const struct rt_mesh *mesh; /* mesh: its triangles, in world space, and
+                         their hierarchy (caller-owned, not copied); here,
+                         in ushift's place, rt_object stays 128 bytes on
+                         32-bit targets (a power of two to index) */
     uint32_t rinv;    /* sphere: (2^(31 + b) - 1) / r, b the bit length of
                          r: the normal is (p - a) rinv / 2^(b + 1); cone:
                          the height below its apex within which its radius
@@ -136,8 +141,6 @@ typedef struct {
                          fraction bits (2^42 / k, at most 2^32 - 1) */
     fx_t k;           /* cone: slope r / h with RT_FRAME_BITS fraction bits
                          (not Q16.16) */
-    const struct rt_mesh *mesh; /* mesh: its triangles, in world space, and
-                         their hierarchy (caller-owned, not copied) */
 } rt_object;
 
 typedef struct {

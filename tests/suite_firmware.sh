@@ -31,6 +31,7 @@ pick_other() {
     local s
     for s in "${FW_TEST_SCENE:-}" scenes/primitives.scene scenes/*.scene; do
         [ -f "$s" ] && [ "$s" != "$SEED" ] || continue
+        grep -q '^mesh ' "$s" && continue # text on the device: no meshes
         awk '$1 ~ /^(sphere|quad|box|cylinder|cone)$/ { o++ }
              $1 == "material" { m++ } $1 == "light" { l++ }
              END { exit !(o <= 16 && m <= 12 && l <= 2) }' "$s" &&
