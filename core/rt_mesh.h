@@ -67,10 +67,6 @@ fx_dir3 rt_mesh_normal(const rt_object *o, fx_vec3 p, unsigned tri);
 int rt_mesh_tri_hit(fx_vec3 a, fx_vec3 b, fx_vec3 c, const rt_ray *r,
                     fx_t tmin, fx_t tmax, fx_t *t, int *side);
 
-/* Checks a mesh's tables (indices in range, a hierarchy that covers every
- * triangle once within RT_MESH_DEPTH levels, a box that holds its
- * triangles) and derives o's bounding sphere. Returns RT_OK, or RT_ERR_ARG.
- * Costs a pass over the mesh: rt_object_prepare calls it. */
-rt_status rt_mesh_prepare(rt_object *o);
+/* rt_mesh_prepare (rt_scene.h) checks these tables once per object. */
 
 #endif /* RT_MESH_H */

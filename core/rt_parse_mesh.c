@@ -10,7 +10,6 @@
  */
 #include "rt_libc.h"
 #include "rt_lex.h"
-#include "rt_mesh.h"
 
 enum { K_FILE, K_MATERIAL, K_SCALE, K_ROTATE, K_TRANSLATE, K_SMOOTH };
 static const char *const mesh_keys[] = {"file", "material", "scale",

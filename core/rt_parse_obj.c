@@ -191,6 +191,7 @@ rt_status rt_parse_material_ref(rt_lex *p, const rt_scene *s,
                                 const rt_parse_names names, int *m)
 {
     rt_lex_token tk;
+    *m = 0;
     TRY(rt_lex_next(p, &tk));
     if (tk.len == 0)
         return rt_lex_need(p, &tk, "material", NULL, 1, "name");

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* rt_scene: scene defaults and the per-object constants the tracer uses. */
 #include "rt_libc.h"
-#include "rt_mesh.h"
+#include "rt_scene.h"
 
 /* Largest cone slope r / h: flatter cones lose the unit-frame precision
  * (k^2 must stay well inside Q16.16). */

@@ -180,6 +180,13 @@ void rt_scene_init(rt_scene *s);
  * states what a mesh must hold). */
 rt_status rt_object_prepare(rt_object *o);
 
+/* A mesh object's part of rt_object_prepare (core/rt_mesh_check.c):
+ * checks its tables (indices in range, a hierarchy that covers every
+ * triangle once within RT_MESH_DEPTH levels, boxes that hold what lies
+ * below them) and derives its bounding sphere. Returns RT_OK, or
+ * RT_ERR_ARG. Costs a pass over the mesh. */
+rt_status rt_mesh_prepare(rt_object *o);
+
 /* Derives a material's constants (reciprocal scales). Returns RT_OK, or
  * RT_ERR_ARG for a zero texture or bump scale. */
 rt_status rt_material_prepare(rt_material *m);

@@ -451,7 +451,7 @@ void mesh_obj_init(mesh_obj_ctx *c, const char *scene_path, FILE *diag,
 void mesh_obj_free(mesh_obj_ctx *c)
 {
     for (unsigned i = 0; i < c->n_mesh; i++)
-        mesh_free(c->mesh[i]);
+        mesh_free(c->mesh[i].m);
     free(c->mesh);
     free(c->base_dir);
     memset(c, 0, sizeof *c);
@@ -514,8 +514,8 @@ rt_status mesh_obj_load(void *ctx, const char *path, size_t path_len,
     rt_parse_error e;
     unsigned long ign = 0;
     rt_mesh *m = mesh_obj_parse(text, len, pl, &e, &ign);
-    rt_mesh **list = m ? realloc(c->mesh, (c->n_mesh + 1) * sizeof *list)
-                       : NULL;
+    struct mesh_obj_made *list =
+        m ? realloc(c->mesh, (c->n_mesh + 1) * sizeof *list) : NULL;
     if (!m || !list) {
         if (m) {
             mesh_free(m);
@@ -530,7 +530,7 @@ rt_status mesh_obj_load(void *ctx, const char *path, size_t path_len,
         return RT_ERR_PARSE;
     }
     c->mesh = list;
-    c->mesh[c->n_mesh++] = m;
+    c->mesh[c->n_mesh++].m = m;
     c->ignored += ign;
     c->triangles += m->n_tris;
     if (ign && c->diag && !c->quiet)

@@ -15,13 +15,18 @@
 #include "mesh_build.h"
 #include "rt_parse.h"
 
+/* One mesh the loader made. */
+struct mesh_obj_made {
+    rt_mesh *m;
+};
+
 /* The loader's state (the ctx of rt_parse_with_meshes): where paths are
  * relative to, where messages go, and the meshes it made. */
 typedef struct {
     char *base_dir;        /* the scene's directory ("" for the current) */
     FILE *diag;            /* errors and notes (NULL: none) */
     int quiet;             /* 1: no notes about ignored statements */
-    rt_mesh **mesh;        /* owned: mesh_obj_free */
+    struct mesh_obj_made *mesh; /* owned: mesh_obj_free */
     unsigned n_mesh;
     unsigned long ignored; /* statements ignored, over every file */
     unsigned long triangles; /* triangles made, over every file */
