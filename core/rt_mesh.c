@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * rt_mesh: the watertight ray/triangle test, the hierarchy's traversal
- * and a mesh's normals (rt_mesh.h; the guarantees in docs/numerics.md).
+ * rt_mesh: the watertight ray/triangle test and the hierarchy's traversal
+ * (rt_mesh.h; the guarantees in docs/numerics.md; normals in
+ * rt_mesh_normal.c).
  *
  * For one ray and one mesh the frame is fixed first: kz the axis along
  * which the direction d is largest, kx and ky the next two in cyclic
@@ -76,6 +77,23 @@ static proj project(const shear *sh, fx_vec3 v)
     const int32_t az = (int32_t)a[sh->kz];
     proj p;
     /* |(a_kx, a_kz)| |(d_kz, d_kx)| <= |a| |d|: each below 2^60. */
+    p.x = (int32_t)((fx_imul64(ax, sh->dz) - fx_imul64(sh->dx, az) + UHALF) >>
+                    FX_UBITS);
+    p.y = (int32_t)((fx_imul64(ay, sh->dz) - fx_imul64(sh->dy, az) + UHALF) >>
+                    FX_UBITS);
+    p.z = az;
+    return p;
+}
+
+/* project for a near mesh (s = 0): every difference from the origin is
+ * below 2^30, so 32 bits hold it (the compiler's 32-bit subtraction). */
+static proj project_near(const shear *sh, fx_vec3 v)
+{
+    const int32_t a[3] = { (int32_t)((int64_t)v.x - sh->o[0]),
+                           (int32_t)((int64_t)v.y - sh->o[1]),
+                           (int32_t)((int64_t)v.z - sh->o[2]) };
+    const int32_t ax = a[sh->kx], ay = a[sh->ky], az = a[sh->kz];
+    proj p;
     p.x = (int32_t)((fx_imul64(ax, sh->dz) - fx_imul64(sh->dx, az) + UHALF) >>
                     FX_UBITS);
     p.y = (int32_t)((fx_imul64(ay, sh->dz) - fx_imul64(sh->dy, az) + UHALF) >>
@@ -221,8 +239,8 @@ static int box_hit(const box_ray *br, const rt_mesh_node *nd, int32_t tmin,
 {
     int32_t tn = tmin, tf = tmax;
     for (int i = 0; i < 3; i++) {
-        int64_t lo = br->base[i] + ((int64_t)nd->lo[i] << br->qshift);
-        int64_t hi = br->base[i] + ((int64_t)nd->hi[i] << br->qshift);
+        int64_t lo = br->base[i] + ((int64_t)nd->box[i] << br->qshift);
+        int64_t hi = br->base[i] + ((int64_t)nd->box[3 + i] << br->qshift);
         if (br->s > 0) {
             lo >>= br->s;                                  /* down */
             hi = -((-hi) >> br->s);                        /* up */
@@ -261,6 +279,91 @@ static int32_t up_shift(fx_t t, int s)
     return v >= FX_MAX ? FX_MAX - 1 : (int32_t)v;
 }
 
+/* The ray against the node boxes when the mesh is near (s = 0): per axis
+ * the distance to a face of coordinate index q is (c + (q << qshift)) m
+ * >> sh, with m = 1 / d signed (|m| < 2^31), and c the offset of the
+ * box's origin from the ray's, widened by BOX_SLACK outwards: c_near for
+ * the face the ray enters through (lo for d > 0, hi for d < 0), c_far for
+ * the other. All of it in 32 bits but the product. */
+typedef struct {
+    int32_t cn[3], cf[3]; /* offsets of the near and far faces */
+    int32_t m[3];         /* 1 / d, 0 for d = 0 */
+    uint8_t sh[3];
+    uint8_t in[3], jf[3]; /* box[] index of the near and far face */
+    uint8_t qshift;
+} near_box;
+
+static void near_box_set(near_box *nb, const rt_mesh *m, const rt_ray *r)
+{
+    const int32_t d[3] = { r->d.x, r->d.y, r->d.z };
+    const fx_t lo[3] = { m->lo.x, m->lo.y, m->lo.z };
+    const fx_t org[3] = { r->o.x, r->o.y, r->o.z };
+    nb->qshift = m->qshift;
+    for (int i = 0; i < 3; i++) {
+        /* Within the mesh's bound (below 2^30): the difference fits. */
+        const int32_t b = (int32_t)((int64_t)lo[i] - org[i]);
+        const int neg = d[i] < 0;
+        nb->in[i] = (uint8_t)(neg ? 3 + i : i);
+        nb->jf[i] = (uint8_t)(neg ? i : 3 + i);
+        nb->cn[i] = neg ? b + BOX_SLACK : b - BOX_SLACK;
+        nb->cf[i] = neg ? b - BOX_SLACK : b + BOX_SLACK;
+        if (d[i] == 0) {
+            nb->m[i] = 0;
+            nb->sh[i] = 0;
+            continue;
+        }
+        const uint32_t ud = (uint32_t)(neg ? -(int64_t)d[i] : d[i]);
+        const int c = fx_clz32(ud);
+        /* (2^62 - 1) / (ud 2^c) < 2^31 as ud 2^c >= 2^31. */
+        const int32_t q =
+            (int32_t)fx_udiv64_32(((uint64_t)1 << 62) - 1u, ud << c);
+        nb->m[i] = neg ? -q : q;
+        nb->sh[i] = (uint8_t)(62 - FX_UBITS - c);
+    }
+}
+
+/* As box_hit, for a near mesh. */
+static int near_box_hit(const near_box *nb, const rt_mesh_node *nd,
+                        int32_t tmin, int32_t tmax, int32_t *tn_out)
+{
+    int64_t tn = tmin, tf = tmax;
+    const int qs = nb->qshift;
+    for (int i = 0; i < 3; i++) {
+        const int32_t pn = nb->cn[i] + ((int32_t)nd->box[nb->in[i]] << qs);
+        const int32_t pf = nb->cf[i] + ((int32_t)nd->box[nb->jf[i]] << qs);
+        if (nb->m[i] == 0) {
+            /* Parallel: inside the slab or a miss (pn is lo's, pf hi's). */
+            if (pn > 0 || pf < 0)
+                return 0;
+            continue;
+        }
+        const int64_t t1 = fx_imul64(pn, nb->m[i]) >> nb->sh[i];
+        const int64_t t2 = fx_imul64(pf, nb->m[i]) >> nb->sh[i];
+        if (t1 > tn)
+            tn = t1;
+        if (t2 < tf)
+            tf = t2;
+        if (tn > tf)
+            return 0;
+    }
+    *tn_out = (int32_t)tn; /* within [tmin, tmax] */
+    return 1;
+}
+
+/* Either frame for the node boxes. */
+typedef struct {
+    int near;
+    near_box nb;
+    box_ray br;
+} box_frame;
+
+static inline int node_hit(const box_frame *bf, const rt_mesh_node *nd,
+                           int32_t tmin, int32_t tmax, int32_t *tn)
+{
+    return bf->near ? near_box_hit(&bf->nb, nd, tmin, tmax, tn)
+                    : box_hit(&bf->br, nd, tmin, tmax, tn);
+}
+
 int rt_mesh_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                 fx_t *t, uint16_t *tri)
 {
@@ -277,17 +380,24 @@ int rt_mesh_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
     shear sh;
     shear_set(&sh, r, shift_for(bound));
     const int s = sh.s;
-    box_ray br;
-    const int32_t dd[3] = { r->d.x, r->d.y, r->d.z };
-    br.base[0] = (int64_t)m->lo.x - r->o.x;
-    br.base[1] = (int64_t)m->lo.y - r->o.y;
-    br.base[2] = (int64_t)m->lo.z - r->o.z;
-    br.qshift = m->qshift;
-    br.s = s;
-    for (int i = 0; i < 3; i++) {
-        br.d[i] = dd[i];
-        if (dd[i] != 0)
-            br.inv[i] = recip_of(dd[i]);
+    /* The node boxes: 32-bit offsets for a near mesh, else 64-bit ones
+     * shifted like the vertices. */
+    box_frame bf;
+    bf.near = s == 0;
+    if (bf.near) {
+        near_box_set(&bf.nb, m, r);
+    } else {
+        const int32_t dd[3] = { r->d.x, r->d.y, r->d.z };
+        bf.br.base[0] = (int64_t)m->lo.x - r->o.x;
+        bf.br.base[1] = (int64_t)m->lo.y - r->o.y;
+        bf.br.base[2] = (int64_t)m->lo.z - r->o.z;
+        bf.br.qshift = m->qshift;
+        bf.br.s = s;
+        for (int i = 0; i < 3; i++) {
+            bf.br.d[i] = dd[i];
+            if (dd[i] != 0)
+                bf.br.inv[i] = recip_of(dd[i]);
+        }
     }
     /* Distances in the shifted frame, rounded outwards (and one below
      * FX_MAX, so that best_s + 1 is one too). */
@@ -300,7 +410,7 @@ int rt_mesh_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
     int32_t stack_t[RT_MESH_DEPTH];
     unsigned sp = 0, ni = 0;
     int32_t tn;
-    if (!box_hit(&br, &m->node[0], tmin_s - 1, best_s + 1, &tn))
+    if (!node_hit(&bf, &m->node[0], tmin_s - 1, best_s + 1, &tn))
         return 0;
     for (;;) {
         const rt_mesh_node *nd = &m->node[ni];
@@ -308,9 +418,13 @@ int rt_mesh_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
             const uint16_t *ix = &m->tri[3u * nd->a];
             for (unsigned k = 0; k < nd->n; k++, ix += 3) {
                 fx_t tk;
-                if (tri_core(&sh, project(&sh, m->v[ix[0]]),
-                             project(&sh, m->v[ix[1]]),
-                             project(&sh, m->v[ix[2]]), tmin, best, &tk)) {
+                const proj pa = bf.near ? project_near(&sh, m->v[ix[0]])
+                                        : project(&sh, m->v[ix[0]]);
+                const proj pb = bf.near ? project_near(&sh, m->v[ix[1]])
+                                        : project(&sh, m->v[ix[1]]);
+                const proj pc = bf.near ? project_near(&sh, m->v[ix[2]])
+                                        : project(&sh, m->v[ix[2]]);
+                if (tri_core(&sh, pa, pb, pc, tmin, best, &tk)) {
                     best = tk;
                     *tri = (uint16_t)(nd->a + k);
                     found = 1;
@@ -320,9 +434,9 @@ int rt_mesh_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
         } else {
             unsigned l = ni + 1, rr = nd->a;
             int32_t tl, tr;
-            const int hl = box_hit(&br, &m->node[l], tmin_s - 1, best_s + 1,
+            const int hl = node_hit(&bf, &m->node[l], tmin_s - 1, best_s + 1,
                                    &tl);
-            const int hr = box_hit(&br, &m->node[rr], tmin_s - 1, best_s + 1,
+            const int hr = node_hit(&bf, &m->node[rr], tmin_s - 1, best_s + 1,
                                    &tr);
             if (hl && hr) {
                 if (tr < tl) { /* the nearer first */
@@ -360,68 +474,4 @@ int rt_mesh_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
             }
         }
     }
-}
-
-/* ---- Normals ------------------------------------------------------------ */
-
-fx_dir3 rt_mesh_normal(const rt_object *o, fx_vec3 p, unsigned tri)
-{
-    const rt_mesh *m = o->mesh;
-    const uint16_t *ix = &m->tri[3u * tri];
-    const fx_vec3 a = m->v[ix[0]], b = m->v[ix[1]], c = m->v[ix[2]];
-    const fx_dir3 n = fx_d3_cross_unit(fx_v3_sub(b, a), fx_v3_sub(c, a));
-    if (!m->vn)
-        return n;
-    /* Barycentric weights of p from the areas it spans with each edge,
-     * in the plane across the normal's largest component. */
-    const int32_t ax = n.x < 0 ? -n.x : n.x, ay = n.y < 0 ? -n.y : n.y;
-    const int32_t az = n.z < 0 ? -n.z : n.z;
-    const unsigned ku = ax >= ay && ax >= az ? 1u : (ay >= az ? 2u : 0u);
-    const unsigned kv = ku == 2 ? 0u : ku + 1;
-    const fx_vec3 vv[3] = { a, b, c };
-    const fx_t pc[3] = { p.x, p.y, p.z };
-    int64_t q[3][2];
-    uint64_t big = 0;
-    for (int i = 0; i < 3; i++) {
-        const fx_t vc[3] = { vv[i].x, vv[i].y, vv[i].z };
-        q[i][0] = (int64_t)vc[ku] - pc[ku];
-        q[i][1] = (int64_t)vc[kv] - pc[kv];
-        for (int j = 0; j < 2; j++) {
-            const uint64_t mag = (uint64_t)(q[i][j] < 0 ? -q[i][j] : q[i][j]);
-            big |= mag;
-        }
-    }
-    const int k = 34 - fx_clz64(big | 1u); /* below 2^30 after >> k */
-    int32_t x[3], y[3];
-    for (int i = 0; i < 3; i++) {
-        x[i] = (int32_t)(k > 0 ? q[i][0] >> k : q[i][0]);
-        y[i] = (int32_t)(k > 0 ? q[i][1] >> k : q[i][1]);
-    }
-    int64_t w[3] = {
-        fx_imul64(x[1], y[2]) - fx_imul64(y[1], x[2]),
-        fx_imul64(x[2], y[0]) - fx_imul64(y[2], x[0]),
-        fx_imul64(x[0], y[1]) - fx_imul64(y[0], x[1]),
-    };
-    const int neg = w[0] + w[1] + w[2] < 0;
-    uint64_t uw[3], sum = 0;
-    for (int i = 0; i < 3; i++) {
-        const int64_t wi = neg ? -w[i] : w[i];
-        uw[i] = wi > 0 ? (uint64_t)wi : 0; /* rounding left p just outside */
-        sum += uw[i];
-    }
-    if (sum == 0)
-        return n;
-    const int k2 = 33 - fx_clz64(sum); /* each weight below 2^31 */
-    int64_t sx = 0, sy = 0, sz = 0;
-    for (int i = 0; i < 3; i++) {
-        const uint32_t wi = (uint32_t)(k2 > 0 ? uw[i] >> k2 : uw[i]);
-        const fx_dir3 ni = m->vn[ix[i]];
-        sx += fx_iumul64(ni.x, wi);
-        sy += fx_iumul64(ni.y, wi);
-        sz += fx_iumul64(ni.z, wi);
-    }
-    const fx_dir3 s = fx_d3_normalize64(sx, sy, sz);
-    if (s.x == 0 && s.y == 0 && s.z == 0)
-        return n;
-    return s;
 }

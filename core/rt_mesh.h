@@ -28,11 +28,12 @@
 #define RT_MESH_MAX 65535u
 
 /* A hierarchy node: its box, quantised to 16 bits per coordinate around
- * the mesh's origin (rt_mesh.lo + q 2^qshift, rounded outwards), and
- * either two children (n = 0: the left one follows this node, the right
- * one is node a) or a leaf of n triangles from tri[3 a]. */
+ * the mesh's origin (rt_mesh.lo + q 2^qshift, rounded outwards): box[0..2]
+ * the low corner's x, y, z, box[3..5] the high corner's; and either two
+ * children (n = 0: the left one follows this node, the right one is node
+ * a) or a leaf of n triangles from tri[3 a]. */
 typedef struct {
-    uint16_t lo[3], hi[3];
+    uint16_t box[6];
     uint16_t a, n;
 } rt_mesh_node;
 

@@ -25,8 +25,8 @@ static void node_box(const rt_mesh *m, const rt_mesh_node *nd, int64_t lo[3],
 {
     const int64_t base[3] = { m->lo.x, m->lo.y, m->lo.z };
     for (int i = 0; i < 3; i++) {
-        lo[i] = base[i] + ((int64_t)nd->lo[i] << m->qshift);
-        hi[i] = base[i] + ((int64_t)nd->hi[i] << m->qshift);
+        lo[i] = base[i] + ((int64_t)nd->box[i] << m->qshift);
+        hi[i] = base[i] + ((int64_t)nd->box[3 + i] << m->qshift);
     }
 }
 
@@ -52,7 +52,7 @@ static rt_status check_tree(const rt_mesh *m)
         int64_t lo[3], hi[3];
         node_box(m, nd, lo, hi);
         for (int i = 0; i < 3; i++)
-            if (nd->lo[i] > nd->hi[i] || hi[i] - lo[i] > MESH_SPAN)
+            if (nd->box[i] > nd->box[3 + i] || hi[i] - lo[i] > MESH_SPAN)
                 return RT_ERR_ARG;
         if (nd->n) {
             if (nd->a != next_tri || (unsigned)nd->a + nd->n > m->n_tris)
@@ -72,7 +72,7 @@ static rt_status check_tree(const rt_mesh *m)
         for (int c = 0; c < 2; c++) {
             const rt_mesh_node *ch = &m->node[kids[c]];
             for (int i = 0; i < 3; i++)
-                if (ch->lo[i] < nd->lo[i] || ch->hi[i] > nd->hi[i])
+                if (ch->box[i] < nd->box[i] || ch->box[3 + i] > nd->box[3 + i])
                     return RT_ERR_ARG;
         }
         /* Right below left: the left one is taken first. */

@@ -47,8 +47,8 @@ static int box_near(const rt_mesh *m, const rt_mesh_node *nd, const double o[3],
     const double q = ldexp(1.0, m->qshift) / 65536.0, pad = 1e-3;
     double tn = -1e30, tf = 1e30;
     for (int i = 0; i < 3; i++) {
-        const double lo = base[i] + nd->lo[i] * q - pad;
-        const double hi = base[i] + nd->hi[i] * q + pad;
+        const double lo = base[i] + nd->box[i] * q - pad;
+        const double hi = base[i] + nd->box[3 + i] * q + pad;
         if (fabs(d[i]) < 1e-12) {
             if (o[i] < lo || o[i] > hi)
                 return 0;
@@ -299,7 +299,63 @@ static void check_closed(const rt_mesh *m, const char *name)
                vol / 6);
 }
 
+static test_mesh make_at(const char *name, int torus, double scale,
+                         double dx, double dy, double dz);
+
 static test_mesh make(const char *name, int torus, double scale)
+{
+    return make_at(name, torus, scale, 0, 0, 0);
+}
+
+/* A mesh thousands of units from the rays' origins, where the vertices
+ * are shifted before projecting (s > 0): rays from near the world's
+ * origin aimed at its vertices and at points of its edges must hit it
+ * (no listing here: rt_mesh_tri_hit is for near meshes). */
+static long far_missed;
+static void run_far(const test_mesh *tm, long rays, uint64_t seed)
+{
+    const rt_mesh *m = tm->m;
+    uint64_t s = seed;
+    for (long k = 0; k < rays; k++) {
+        const unsigned t = (unsigned)(th_rnd64(&s) % m->n_tris);
+        const unsigned j = (unsigned)(th_rnd64(&s) % 3);
+        const unsigned a = m->tri[3 * t + j], b = m->tri[3 * t + (j + 1) % 3];
+        const double l = (k & 1) ? rnd(&s) : 0.0;
+        const fx_t va[3] = {m->v[a].x, m->v[a].y, m->v[a].z};
+        const fx_t vb[3] = {m->v[b].x, m->v[b].y, m->v[b].z};
+        double p[3];
+        for (int i = 0; i < 3; i++)
+            p[i] = F2D(va[i]) + l * (F2D(vb[i]) - F2D(va[i]));
+        const fx_vec3 o = q16v(100 * (rnd(&s) - 0.5), 100 * (rnd(&s) - 0.5),
+                               100 * (rnd(&s) - 0.5));
+        rt_ray r;
+        rt_ray_set(&r, o, unit_of(p[0] - F2D(o.x), p[1] - F2D(o.y),
+                                  p[2] - F2D(o.z)));
+        /* Not near the silhouette, where a ray may graze past. */
+        double na[3], nb[3], da = 0, db = 0;
+        vnorm(m, a, na);
+        vnorm(m, b, nb);
+        const double dd[3] = {(double)r.d.x / FX_UONE,
+                              (double)r.d.y / FX_UONE,
+                              (double)r.d.z / FX_UONE};
+        for (int i = 0; i < 3; i++) {
+            da += na[i] * dd[i];
+            db += nb[i] * dd[i];
+        }
+        if (fabs(da) < 0.3 || fabs(db) < 0.3)
+            continue;
+        fx_t th;
+        uint16_t tri;
+        rays_fired++;
+        if (!rt_mesh_hit(&tm->o, &r, 0, FX_MAX, &th, &tri) &&
+            far_missed++ < 5)
+            printf("    %s: missed from (%d %d %d) along (%d %d %d)\n",
+                   tm->name, o.x, o.y, o.z, r.d.x, r.d.y, r.d.z);
+    }
+}
+
+static test_mesh make_at(const char *name, int torus, double scale,
+                         double dx, double dy, double dz)
 {
     test_mesh tm;
     fx_vec3 *v;
@@ -314,6 +370,10 @@ static test_mesh make(const char *name, int torus, double scale)
     tm.name = name;
     tm.scale = torus ? 0.4 * scale : scale;
     CHECK(rc == 0);
+    for (unsigned i = 0; rc == 0 && i < nv; i++)
+        v[i] = fx_v3(v[i].x + (fx_t)lround(dx * 65536),
+                     v[i].y + (fx_t)lround(dy * 65536),
+                     v[i].z + (fx_t)lround(dz * 65536));
     tm.m = mesh_build(v, nv, vn, tri, nt, msg, sizeof msg);
     if (!CHECK(tm.m != NULL))
         printf("    %s\n", msg);
@@ -339,8 +399,14 @@ int main(void)
     /* A mesh away from the origin, and a larger one. */
     test_mesh far = make("far icosphere", 0, 3.0);
     run_mesh(&far, 40000, 3);
-    printf("    %ld rays: %ld out of order, %ld missed, %ld nearest wrong\n",
-           rays_fired, bad_order, missed, nearest_wrong);
+    /* 12,000 units away in x and y: a shift of 1 or 2 bits. */
+    test_mesh away = make_at("distant icosphere", 0, 40.0, 9000, 9000, 0);
+    run_far(&away, 20000, 4);
+    printf("    %ld rays: %ld out of order, %ld missed, %ld nearest wrong, "
+           "%ld missed the distant mesh\n",
+           rays_fired, bad_order, missed, nearest_wrong, far_missed);
+    CHECK_EQ(far_missed, 0);
+    mesh_free(away.m);
     CHECK(rays_fired >= 1000000);
     CHECK_EQ(bad_order, 0);
     CHECK_EQ(missed, 0);

@@ -187,8 +187,8 @@ static void put_mesh(emitter *e, const rt_mesh *m, unsigned i)
     put(e, "static const rt_mesh_node fw_mesh%u_node[%u] = {", i, m->n_nodes);
     for (unsigned k = 0; k < m->n_nodes; k++) {
         const rt_mesh_node *n = &m->node[k];
-        put(e, "    {{%u, %u, %u}, {%u, %u, %u}, %u, %u},", n->lo[0], n->lo[1],
-            n->lo[2], n->hi[0], n->hi[1], n->hi[2], n->a, n->n);
+        put(e, "    {{%u, %u, %u, %u, %u, %u}, %u, %u},", n->box[0], n->box[1],
+            n->box[2], n->box[3], n->box[4], n->box[5], n->a, n->n);
     }
     put(e, "};");
     put(e, "static const rt_mesh fw_mesh%u = {", i);

@@ -68,8 +68,8 @@ static void set_box(builder *b, rt_mesh_node *nd, const box64 *bx)
     for (int i = 0; i < 3; i++) {
         const int64_t lo = (bx->lo[i] - b->base[i]) >> b->qshift;
         const int64_t hi = -((-(bx->hi[i] - b->base[i])) >> b->qshift);
-        nd->lo[i] = (uint16_t)lo;
-        nd->hi[i] = (uint16_t)hi;
+        nd->box[i] = (uint16_t)lo;
+        nd->box[3 + i] = (uint16_t)hi;
     }
 }
 
