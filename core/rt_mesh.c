@@ -350,18 +350,20 @@ static int near_box_hit(const near_box *nb, const rt_mesh_node *nd,
     return 1;
 }
 
-/* Either frame for the node boxes. */
+/* Either frame for the node boxes, as near says. */
 typedef struct {
     int near;
-    near_box nb;
-    box_ray br;
+    union {
+        near_box nb;
+        box_ray br;
+    } u;
 } box_frame;
 
 static inline int node_hit(const box_frame *bf, const rt_mesh_node *nd,
                            int32_t tmin, int32_t tmax, int32_t *tn)
 {
-    return bf->near ? near_box_hit(&bf->nb, nd, tmin, tmax, tn)
-                    : box_hit(&bf->br, nd, tmin, tmax, tn);
+    return bf->near ? near_box_hit(&bf->u.nb, nd, tmin, tmax, tn)
+                    : box_hit(&bf->u.br, nd, tmin, tmax, tn);
 }
 
 int rt_mesh_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
@@ -385,18 +387,18 @@ int rt_mesh_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
     box_frame bf;
     bf.near = s == 0;
     if (bf.near) {
-        near_box_set(&bf.nb, m, r);
+        near_box_set(&bf.u.nb, m, r);
     } else {
         const int32_t dd[3] = { r->d.x, r->d.y, r->d.z };
-        bf.br.base[0] = (int64_t)m->lo.x - r->o.x;
-        bf.br.base[1] = (int64_t)m->lo.y - r->o.y;
-        bf.br.base[2] = (int64_t)m->lo.z - r->o.z;
-        bf.br.qshift = m->qshift;
-        bf.br.s = s;
+        bf.u.br.base[0] = (int64_t)m->lo.x - r->o.x;
+        bf.u.br.base[1] = (int64_t)m->lo.y - r->o.y;
+        bf.u.br.base[2] = (int64_t)m->lo.z - r->o.z;
+        bf.u.br.qshift = m->qshift;
+        bf.u.br.s = s;
         for (int i = 0; i < 3; i++) {
-            bf.br.d[i] = dd[i];
+            bf.u.br.d[i] = dd[i];
             if (dd[i] != 0)
-                bf.br.inv[i] = recip_of(dd[i]);
+                bf.u.br.inv[i] = recip_of(dd[i]);
         }
     }
     /* Distances in the shifted frame, rounded outwards (and one below

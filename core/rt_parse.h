@@ -25,9 +25,10 @@ typedef struct {
 
 /* Parses len bytes of scene text into *s (which it initialises first).
  * Never reads outside text[0..len); time is linear in len; no recursion,
- * no allocation. Returns RT_OK; or RT_ERR_PARSE, RT_ERR_CAPACITY or
- * RT_ERR_DEGENERATE with *err filled in (err must not be NULL). After an
- * error *s holds a partial scene: do not render it. */
+ * no allocation. Returns RT_OK; or RT_ERR_PARSE, RT_ERR_CAPACITY,
+ * RT_ERR_DEGENERATE, or RT_ERR_UNSUPPORTED for a 'mesh' statement (see
+ * rt_parse_with_meshes), with *err filled in (err must not be NULL).
+ * After an error *s holds a partial scene: do not render it. */
 rt_status rt_parse(const char *text, size_t len, rt_scene *s,
                    rt_parse_error *err);
 
