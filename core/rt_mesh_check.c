@@ -115,10 +115,10 @@ rt_status rt_mesh_prepare(rt_object *o)
         c[2] < FX_MIN || c[2] > FX_MAX)
         return RT_ERR_ARG;
     o->bc = fx_v3((fx_t)c[0], (fx_t)c[1], (fx_t)c[2]);
-    const int64_t ex = hi[0] - c[0] > c[0] - lo[0] ? hi[0] - c[0] : c[0] - lo[0];
-    const int64_t ey = hi[1] - c[1] > c[1] - lo[1] ? hi[1] - c[1] : c[1] - lo[1];
-    const int64_t ez = hi[2] - c[2] > c[2] - lo[2] ? hi[2] - c[2] : c[2] - lo[2];
-    o->br = dist_up(ex, ey, ez) + MESH_MARGIN;
+    int64_t e[3];
+    for (int i = 0; i < 3; i++)
+        e[i] = hi[i] - c[i] > c[i] - lo[i] ? hi[i] - c[i] : c[i] - lo[i];
+    o->br = dist_up(e[0], e[1], e[2]) + MESH_MARGIN;
     o->convex = 0;
     o->caps = 0;
     return RT_OK;

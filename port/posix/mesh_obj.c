@@ -280,10 +280,9 @@ static rt_mesh *assemble(obj_lex *x, const vec *pos, const vec *nrm,
         int fits = 1;
         for (int i = 0; i < 3; i++)
             fits &= e1[i] == (fx_t)e1[i] && e2[i] == (fx_t)e2[i];
-        const fx_dir3 fn =
-            fits ? fx_d3_cross_unit(fx_v3((fx_t)e1[0], (fx_t)e1[1], (fx_t)e1[2]),
-                                    fx_v3((fx_t)e2[0], (fx_t)e2[1], (fx_t)e2[2]))
-                 : fx_d3(1, 0, 0);
+        const fx_vec3 a1 = fx_v3((fx_t)e1[0], (fx_t)e1[1], (fx_t)e1[2]);
+        const fx_vec3 a2 = fx_v3((fx_t)e2[0], (fx_t)e2[1], (fx_t)e2[2]);
+        const fx_dir3 fn = fits ? fx_d3_cross_unit(a1, a2) : fx_d3(1, 0, 0);
         if (fn.x == 0 && fn.y == 0 && fn.z == 0)
             continue;
         for (int j = 0; j < 3; j++) {

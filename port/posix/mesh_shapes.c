@@ -180,7 +180,8 @@ int mesh_torus(double R, double r, unsigned n_u, unsigned n_v,
         const double a = 2 * pi * i / n_u;
         for (unsigned j = 0; j < n_v; j++) {
             const double b = 2 * pi * j / n_v;
-            const double nx = cos(b) * cos(a), ny = sin(b), nz = cos(b) * sin(a);
+            const double nx = cos(b) * cos(a), ny = sin(b);
+            const double nz = cos(b) * sin(a);
             const double cx = R * cos(a), cz = R * sin(a);
             v[i * n_v + j] = fx_v3(q16(cx + r * nx), q16(r * ny),
                                    q16(cz + r * nz));
