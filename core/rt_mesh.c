@@ -64,17 +64,11 @@ typedef struct {
     int32_t x, y, z;
 } proj;
 
-static proj project(const shear *sh, fx_vec3 v)
+/* The projection of a vertex a (relative to the origin, shifted, each
+ * component below 2^30). */
+static proj shear_rel(const shear *sh, const int32_t a[3])
 {
-    int64_t a[3] = { (int64_t)v.x - sh->o[0], (int64_t)v.y - sh->o[1],
-                     (int64_t)v.z - sh->o[2] };
-    if (sh->s > 0) {
-        const int64_t half = (int64_t)1 << (sh->s - 1);
-        for (int i = 0; i < 3; i++)
-            a[i] = (a[i] + half) >> sh->s;
-    }
-    const int32_t ax = (int32_t)a[sh->kx], ay = (int32_t)a[sh->ky];
-    const int32_t az = (int32_t)a[sh->kz];
+    const int32_t ax = a[sh->kx], ay = a[sh->ky], az = a[sh->kz];
     proj p;
     /* |(a_kx, a_kz)| |(d_kz, d_kx)| <= |a| |d|: each below 2^60. */
     p.x = (int32_t)((fx_imul64(ax, sh->dz) - fx_imul64(sh->dx, az) + UHALF) >>
@@ -85,6 +79,17 @@ static proj project(const shear *sh, fx_vec3 v)
     return p;
 }
 
+static proj project(const shear *sh, fx_vec3 v)
+{
+    int64_t a[3] = { (int64_t)v.x - sh->o[0], (int64_t)v.y - sh->o[1],
+                     (int64_t)v.z - sh->o[2] };
+    int32_t a32[3];
+    const int64_t half = sh->s > 0 ? (int64_t)1 << (sh->s - 1) : 0;
+    for (int i = 0; i < 3; i++)
+        a32[i] = (int32_t)((a[i] + half) >> sh->s);
+    return shear_rel(sh, a32);
+}
+
 /* project for a near mesh (s = 0): every difference from the origin is
  * below 2^30, so 32 bits hold it (the compiler's 32-bit subtraction). */
 static proj project_near(const shear *sh, fx_vec3 v)
@@ -92,14 +97,7 @@ static proj project_near(const shear *sh, fx_vec3 v)
     const int32_t a[3] = { (int32_t)((int64_t)v.x - sh->o[0]),
                            (int32_t)((int64_t)v.y - sh->o[1]),
                            (int32_t)((int64_t)v.z - sh->o[2]) };
-    const int32_t ax = a[sh->kx], ay = a[sh->ky], az = a[sh->kz];
-    proj p;
-    p.x = (int32_t)((fx_imul64(ax, sh->dz) - fx_imul64(sh->dx, az) + UHALF) >>
-                    FX_UBITS);
-    p.y = (int32_t)((fx_imul64(ay, sh->dz) - fx_imul64(sh->dy, az) + UHALF) >>
-                    FX_UBITS);
-    p.z = az;
-    return p;
+    return shear_rel(sh, a);
 }
 
 /* The sign of the edge function e of the origin for the edge p -> q; on
