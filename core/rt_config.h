@@ -145,7 +145,7 @@
  * -DRT_NO_<NAME> removes the code for one effect or shape, for each NAME
  * of RT_FEATURE_LIST (rt_features.h): SHADOWS, REFLECTION, REFRACTION,
  * TEXTURES, BUMP, SPECULAR, MULTILIGHT, SUPERSAMPLING, SPHERE, QUAD, BOX,
- * CYLINDER, CONE. A scene that needs a removed effect is refused
+ * CYLINDER, CONE, MESH. A scene that needs a removed effect is refused
  * (rt_render_rows returns RT_ERR_UNSUPPORTED), never rendered wrongly;
  * make firmware derives the flags from the scene (fixtrace --build-flags).
  *
@@ -232,6 +232,12 @@
 #define RT_HAS_CONE 1 /* cones */
 #endif
 
+#ifdef RT_NO_MESH
+#define RT_HAS_MESH 0
+#else
+#define RT_HAS_MESH 1 /* triangle meshes */
+#endif
+
 /* ---- Derived switches (0/1) --------------------------------------------- */
 
 /* Rays that leave a surface: reflected or refracted. */
@@ -245,7 +251,8 @@
 
 /* Any shape at all (0: a firmware for a scene with no objects). */
 #define RT_HAS_SHAPES                                                         \
-    (RT_HAS_SPHERE || RT_HAS_QUAD || RT_HAS_BOX || RT_HAS_UPRIGHT)
+    (RT_HAS_SPHERE || RT_HAS_QUAD || RT_HAS_BOX || RT_HAS_UPRIGHT ||       \
+     RT_HAS_MESH)
 
 /* The cut-off of faint rays (rt_cutoff.h): with secondary rays only. */
 #define RT_CUTOFF RT_HAS_SECONDARY

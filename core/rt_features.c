@@ -10,7 +10,8 @@ typedef char kinds_in_list_order[
     RT_FEAT_QUAD == RT_FEAT_SPHERE << RT_QUAD &&
     RT_FEAT_BOX == RT_FEAT_SPHERE << RT_BOX &&
     RT_FEAT_CYLINDER == RT_FEAT_SPHERE << RT_CYLINDER &&
-    RT_FEAT_CONE == RT_FEAT_SPHERE << RT_CONE ? 1 : -1];
+    RT_FEAT_CONE == RT_FEAT_SPHERE << RT_CONE &&
+    RT_FEAT_MESH == RT_FEAT_SPHERE << RT_MESH ? 1 : -1];
 
 uint32_t rt_scene_features(const rt_scene *s, uint8_t spp)
 {

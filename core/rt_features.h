@@ -24,7 +24,8 @@
     X(QUAD, "quad")                                                           \
     X(BOX, "box")                                                             \
     X(CYLINDER, "cylinder")                                                   \
-    X(CONE, "cone")
+    X(CONE, "cone")                                                           \
+    X(MESH, "mesh")
 
 /* Bit positions: RT_FEAT_BIT_SHADOWS = 0, ... and RT_FEAT_COUNT. */
 enum {

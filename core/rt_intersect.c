@@ -10,6 +10,7 @@
  * size or distance: the discriminant keeps its precision for small and far
  * objects alike (rt_upright.h). See docs/numerics.md.
  */
+#include "rt_mesh.h"
 #include "rt_shape.h"
 
 /* Q16.16 ulps (plus 2^-(FX_UBITS + 1) of the size) by which quads reach
@@ -175,7 +176,7 @@ static int take(int64_t t, fx_t tmin, fx_t *best)
 }
 
 static int hit_sphere(const rt_object *o, const rt_ray *r, fx_t tmin,
-                      fx_t tmax, fx_t *t, uint8_t *part)
+                      fx_t tmax, fx_t *t, uint16_t *part)
 {
     int64_t tca, h[3];
     uint64_t disc;
@@ -193,7 +194,7 @@ static int hit_sphere(const rt_object *o, const rt_ray *r, fx_t tmin,
 }
 
 static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
-                    fx_t tmax, fx_t *t, uint8_t *part)
+                    fx_t tmax, fx_t *t, uint16_t *part)
 {
     /* A flat quad (rt_object.flat) has n = (0, n.y, 0): the same sums
      * without the zero terms. */
@@ -319,7 +320,7 @@ static fx_t slab_t(const slab_inv *v, fx_t x)
 }
 
 static int hit_box(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
-                   fx_t *t, uint8_t *part)
+                   fx_t *t, uint16_t *part)
 {
     /* Arrays, not pointers into the structs: indexing &v.x past x is
      * undefined behaviour. */
@@ -389,8 +390,23 @@ static int hit_box(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
  * them, where they are inlined as before (rt_upright.h). */
 #include "rt_upright.h"
 
+/* A mesh: its bounding sphere when ray and mesh are near the origin
+ * (its margin covers the triangle test's rounding there, rt_mesh_check.c),
+ * then its hierarchy; part is the triangle. */
+RT_NOINLINE static int hit_mesh(const rt_object *o, const rt_ray *r,
+                                fx_t tmin, fx_t tmax, fx_t *t,
+                                uint16_t *part)
+{
+    int64_t tca, h[3];
+    uint64_t disc;
+    if (o->small && r->small &&
+        !bsphere(&o->bc, o->br, 1, r, tmin, tmax, &tca, &disc, h))
+        return 0;
+    return rt_mesh_hit(o, r, tmin, tmax, t, part);
+}
+
 int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
-                 fx_t *t, uint8_t *part)
+                 fx_t *t, uint16_t *part)
 {
     /* A kind this build removed never hits (rendering refuses scenes
      * with one): its case falls out of the switch. */
@@ -419,6 +435,10 @@ int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
         if (!RT_HAS_UPRIGHT)
             break;
         return hit_upright(o, r, tmin, tmax, t, part);
+    case RT_MESH:
+        if (!RT_HAS_MESH)
+            break;
+        return hit_mesh(o, r, tmin, tmax, t, part);
     default:
         break;
     }

@@ -42,6 +42,8 @@ typedef struct {
     uint32_t line;   /* 1-based number of the current line; 0 before */
     rt_parse_error *err;
     size_t mlen;     /* bytes in err->msg */
+    rt_mesh_loader load; /* reads mesh files; NULL: none (rt_parse) */
+    void *load_ctx;
 } rt_lex;
 
 /* The material names, indexed like rt_scene.mat; on the parser's stack. */
@@ -143,5 +145,16 @@ rt_status rt_parse_material(rt_lex *p, const rt_lex_token *kw, rt_scene *s,
 /* An object statement of rt_kind `kind` after its keyword kw. */
 rt_status rt_parse_object(rt_lex *p, const rt_lex_token *kw, int kind,
                           rt_scene *s, const rt_parse_names names);
+
+/* The material a statement names in token tk (the next one): its index in
+ * *m, or the error that it is missing or not defined. */
+rt_status rt_parse_material_ref(rt_lex *p, const rt_scene *s,
+                                const rt_parse_names names, int *m);
+
+/* ---- The mesh statement (rt_parse_mesh.c) ------------------------------- */
+
+/* The 'mesh' statement after its keyword kw. */
+rt_status rt_parse_mesh(rt_lex *p, const rt_lex_token *kw, rt_scene *s,
+                        const rt_parse_names names);
 
 #endif /* RT_LEX_H */

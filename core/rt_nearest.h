@@ -16,10 +16,10 @@
 /* Tests object i for a nearer hit than *best. */
 static inline void rt_try_nearest(rt_work *wk, const rt_object *objs,
                                   const rt_ray *r, unsigned i, fx_t *best,
-                                  uint16_t *obj, uint8_t *part)
+                                  uint16_t *obj, uint16_t *part)
 {
     fx_t ti;
-    uint8_t pi;
+    uint16_t pi;
     RT_COUNT(wk, tests);
     if (rt_intersect(&objs[i], r, RT_EPS, *best, &ti, &pi)) {
         *best = ti;
@@ -33,7 +33,7 @@ static inline void rt_try_nearest(rt_work *wk, const rt_object *objs,
  * on a hit. */
 static inline int rt_nearest(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
                              unsigned skip, unsigned from, fx_t *t,
-                             uint16_t *obj, uint8_t *part)
+                             uint16_t *obj, uint16_t *part)
 {
     const rt_scene *s = tr->scene;
     const uint32_t *cand;
@@ -65,7 +65,7 @@ static inline int rt_nearest(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
 static inline int rt_nearest_camera(const rt_tracer *tr, rt_work *wk,
                                     const rt_ray *r, const rt_row_spans *rs,
                                     unsigned x, fx_t *t, uint16_t *obj,
-                                    uint8_t *part)
+                                    uint16_t *part)
 {
     const rt_scene *s = tr->scene;
     fx_t best = FX_MAX;
@@ -74,7 +74,7 @@ static inline int rt_nearest_camera(const rt_tracer *tr, rt_work *wk,
     const unsigned n_spans = rs->count;
     for (unsigned k = 0; k < n_spans; k++) {
         fx_t ti;
-        uint8_t pi;
+        uint16_t pi;
         if (x < (unsigned)spans[k].x0 || x > (unsigned)spans[k].x1)
             continue;
         RT_COUNT(wk, tests);

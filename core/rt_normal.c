@@ -11,6 +11,7 @@
  * and moved along d by one Newton step onto the side, and the normal and
  * the hit point are taken there (docs/numerics.md).
  */
+#include "rt_mesh.h"
 #include "rt_shape.h"
 
 /* v 2^-n, rounded to nearest, for n > 0. */
@@ -118,7 +119,7 @@ static fx_vec3 moved(fx_vec3 p, const int32_t q[3])
 }
 
 fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *pp,
-                  uint8_t part, int precise)
+                  uint16_t part, int precise)
 {
     const fx_vec3 p = *pp;
     int32_t q[3];
@@ -137,6 +138,10 @@ fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *pp,
     }
     case RT_QUAD:
         return o->n;
+    case RT_MESH:
+        if (!RT_HAS_MESH)
+            return o->n; /* never hit in this build */
+        return rt_mesh_normal(o, p, part);
     case RT_BOX: {
         /* part is the axis of the face; its side is the one p lies on. */
         const fx_t pc[3] = { p.x, p.y, p.z };

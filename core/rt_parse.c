@@ -138,16 +138,16 @@ static rt_status st_light(rt_lex *p, const rt_lex_token *kw, rt_scene *s)
 
 enum {
     S_IMAGE, S_CAMERA, S_BACKGROUND, S_AMBIENT, S_SHADOWS, S_LIGHT,
-    S_MATERIAL, S_SPHERE, S_QUAD, S_BOX, S_CYLINDER, S_CONE
+    S_MATERIAL, S_SPHERE, S_QUAD, S_BOX, S_CYLINDER, S_CONE, S_MESH
 };
 static const char *const stmt_keys[] = {
     "image", "light", "camera", "background", "ambient", "shadows",
-    "material", "sphere", "quad", "box", "cylinder", "cone", NULL};
+    "material", "sphere", "quad", "box", "cylinder", "cone", "mesh", NULL};
 /* stmt_keys order, so the message lists them as a file usually has them. */
 static const uint8_t stmt_ids[] = {S_IMAGE, S_LIGHT, S_CAMERA, S_BACKGROUND,
                                    S_AMBIENT, S_SHADOWS, S_MATERIAL,
                                    S_SPHERE, S_QUAD, S_BOX, S_CYLINDER,
-                                   S_CONE};
+                                   S_CONE, S_MESH};
 
 static rt_status statement(rt_lex *p, const rt_lex_token *kw, rt_scene *s,
                            rt_parse_names names, uint32_t once[5])
@@ -201,6 +201,8 @@ static rt_status statement(rt_lex *p, const rt_lex_token *kw, rt_scene *s,
         return st_light(p, kw, s);
     case S_MATERIAL:
         return rt_parse_material(p, kw, s, names);
+    case S_MESH:
+        return rt_parse_mesh(p, kw, s, names);
     default:
         return rt_parse_object(p, kw, RT_SPHERE + (id - S_SPHERE), s, names);
     }
@@ -208,6 +210,13 @@ static rt_status statement(rt_lex *p, const rt_lex_token *kw, rt_scene *s,
 
 rt_status rt_parse(const char *text, size_t len, rt_scene *s,
                    rt_parse_error *err)
+{
+    return rt_parse_with_meshes(text, len, s, err, NULL, NULL);
+}
+
+rt_status rt_parse_with_meshes(const char *text, size_t len, rt_scene *s,
+                               rt_parse_error *err, rt_mesh_loader load,
+                               void *ctx)
 {
     rt_parse_names names;
     uint32_t once[5] = {0, 0, 0, 0, 0};
@@ -219,6 +228,8 @@ rt_status rt_parse(const char *text, size_t len, rt_scene *s,
     p.t = text;
     p.len = len;
     p.err = err;
+    p.load = load;
+    p.load_ctx = ctx;
     /* A UTF-8 byte order mark, as some editors write, is skipped. */
     if (len >= 3 && (unsigned char)text[0] == 0xEF &&
         (unsigned char)text[1] == 0xBB && (unsigned char)text[2] == 0xBF)

@@ -187,6 +187,25 @@ rt_status rt_parse_material(rt_lex *p, const rt_lex_token *kw, rt_scene *s,
     return RT_OK;
 }
 
+rt_status rt_parse_material_ref(rt_lex *p, const rt_scene *s,
+                                const rt_parse_names names, int *m)
+{
+    rt_lex_token tk;
+    *m = 0;
+    TRY(rt_lex_next(p, &tk));
+    if (tk.len == 0)
+        return rt_lex_need(p, &tk, "material", NULL, 1, "name");
+    *m = lookup(p, &tk, s, names);
+    if (*m < 0) {
+        rt_lex_fail(p, &tk, RT_ERR_PARSE, "material ");
+        rt_lex_say_tok(p, &tk);
+        rt_lex_say(p, " is not defined (materials must be defined "
+                      "before use)");
+        return RT_ERR_PARSE;
+    }
+    return RT_OK;
+}
+
 /* ---- Objects ------------------------------------------------------------ */
 
 /* What each object field sets. */
@@ -329,18 +348,8 @@ rt_status rt_parse_object(rt_lex *p, const rt_lex_token *kw, int kind,
             TRY(rt_lex_get_fxs(p, key, NULL, 1, &o->h, FX_MIN, FX_MAX, ""));
             break;
         case F_MAT: {
-            rt_lex_token tk;
-            TRY(rt_lex_next(p, &tk));
-            if (tk.len == 0)
-                return rt_lex_need(p, &tk, "material", NULL, 1, "name");
-            int m = lookup(p, &tk, s, names);
-            if (m < 0) {
-                rt_lex_fail(p, &tk, RT_ERR_PARSE, "material ");
-                rt_lex_say_tok(p, &tk);
-                rt_lex_say(p, " is not defined (materials must be defined "
-                              "before use)");
-                return RT_ERR_PARSE;
-            }
+            int m;
+            TRY(rt_parse_material_ref(p, s, names, &m));
             o->material = (uint8_t)m;
             break;
         }

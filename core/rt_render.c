@@ -81,7 +81,8 @@ static int scene_in_range(const rt_scene *s)
     }
     for (unsigned i = 0; i < s->n_objects; i++)
         if (s->obj[i].material >= s->n_materials ||
-            s->obj[i].kind >= RT_KIND_COUNT)
+            s->obj[i].kind >= RT_KIND_COUNT ||
+            (s->obj[i].kind == RT_MESH && !s->obj[i].mesh))
             return 0;
     return 1;
 }

@@ -161,6 +161,8 @@ static rt_status prepare_shape(rt_object *o)
             o->rinv = th > UINT32_MAX ? UINT32_MAX : (uint32_t)th;
         }
         return upright_bounds(o);
+    case RT_MESH:
+        return rt_mesh_prepare(o);
     default:
         return RT_ERR_ARG;
     }

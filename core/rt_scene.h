@@ -6,7 +6,9 @@
  *
  * Geometry conventions: y is up. Cylinders and cones stand on their base
  * centre and extend along +y. Boxes are axis-aligned. A quad is a
- * parallelogram: corner + s*edge1 + t*edge2 for s, t in [0, 1].
+ * parallelogram: corner + s*edge1 + t*edge2 for s, t in [0, 1]. A mesh
+ * refers to triangles and their hierarchy in storage the caller owns
+ * (constant tables in flash on a device, rt_mesh.h).
  */
 #ifndef RT_SCENE_H
 #define RT_SCENE_H
@@ -34,6 +36,7 @@
                               RT_MAX_LIGHTS)
 #define rt_scene_init RT_CFG(rt_scene_init)
 #define rt_parse RT_CFG(rt_parse)
+#define rt_parse_with_meshes RT_CFG(rt_parse_with_meshes)
 #define rt_render_rows RT_CFG(rt_render_rows)
 #define rt_options_from_scene RT_CFG(rt_options_from_scene)
 #define rt_scene_features RT_CFG(rt_scene_features)
@@ -87,6 +90,8 @@ typedef enum {
     RT_BOX,
     RT_CYLINDER,
     RT_CONE,
+    /* Triangles with a bounding volume hierarchy (rt_mesh.h). */
+    RT_MESH,
     RT_KIND_COUNT
 } rt_kind;
 
@@ -108,6 +113,9 @@ typedef struct {
     uint8_t flat;     /* derived, quads: 1 if n is along y, pu along z and
                          pv along x; 2 if n along y, pu along x, pv along z
                          (the intersection skips the zero terms); else 0 */
+    int8_t ushift;    /* derived: cylinders and cones are solved in the
+                         frame centred on bc and scaled by 2^-ushift
+                         (exact), which brings br into (1/2, 1] */
     fx_vec3 a;        /* sphere: centre; quad: corner; box: min;
                          cylinder, cone: base centre */
     fx_vec3 b;        /* quad: edge1; box: max */
@@ -122,9 +130,10 @@ typedef struct {
                          quad, whose dist is exact, uses it */
     fx_vec3 bc;       /* bounding sphere centre */
     fx_t br;          /* bounding sphere radius */
-    int8_t ushift;    /* cylinders and cones are solved in the frame centred
-                         on bc and scaled by 2^-ushift (exact), which brings
-                         br into (1/2, 1] */
+    const struct rt_mesh *mesh; /* mesh: its triangles, in world space, and
+                         their hierarchy (caller-owned, not copied); here,
+                         in ushift's place, rt_object stays 128 bytes on
+                         32-bit targets (a power of two to index) */
     uint32_t rinv;    /* sphere: (2^(31 + b) - 1) / r, b the bit length of
                          r: the normal is (p - a) rinv / 2^(b + 1); cone:
                          the height below its apex within which its radius
@@ -167,8 +176,16 @@ void rt_scene_init(rt_scene *s);
 
 /* Derives an object's constants and checks its shape. Returns RT_OK, or
  * RT_ERR_DEGENERATE for a zero radius, height, edge or extent, or for
- * parallel quad edges. */
+ * parallel quad edges, or RT_ERR_ARG for a mesh without one (rt_mesh.h
+ * states what a mesh must hold). */
 rt_status rt_object_prepare(rt_object *o);
+
+/* A mesh object's part of rt_object_prepare (core/rt_mesh_check.c):
+ * checks its tables (indices in range, a hierarchy that covers every
+ * triangle once within RT_MESH_DEPTH levels, boxes that hold what lies
+ * below them) and derives its bounding sphere. Returns RT_OK, or
+ * RT_ERR_ARG. Costs a pass over the mesh. */
+rt_status rt_mesh_prepare(rt_object *o);
 
 /* Derives a material's constants (reciprocal scales). Returns RT_OK, or
  * RT_ERR_ARG for a zero texture or bump scale. */

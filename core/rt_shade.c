@@ -50,7 +50,7 @@ RT_NOINLINE static fx_dir3 bumped_normal(const rt_material *m,
 
 /* Colour of the hit (object oi, part, distance t) seen along r. */
 static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
-                    unsigned depth, fx_t w, uint16_t oi, uint8_t part, fx_t t)
+                    unsigned depth, fx_t w, uint16_t oi, uint16_t part, fx_t t)
 {
     const rt_scene *s = tr->scene;
     const rt_object *o = &s->obj[oi];
@@ -161,7 +161,7 @@ RT_NOINLINE static rt_rgb trace(const rt_tracer *tr, rt_work *wk,
 {
     fx_t t;
     uint16_t oi = 0;
-    uint8_t part = 0;
+    uint16_t part = 0;
     if (!rt_nearest(tr, wk, r, skip, from, &t, &oi, &part))
         return tr->scene->background;
     if (wk->sign) /* a draft render tells its pixels apart by their hits */
@@ -180,7 +180,7 @@ rt_rgb rt_trace_camera(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
 {
     fx_t t;
     uint16_t oi = 0;
-    uint8_t part = 0;
+    uint16_t part = 0;
     if (RT_CUTOFF)
         wk->budget = tr->cut_budget; /* a new sample */
     if (!rt_nearest_camera(tr, wk, r, rs, x, &t, &oi, &part))

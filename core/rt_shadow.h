@@ -34,7 +34,7 @@ static inline int rt_blocks(rt_work *wk, const rt_object *objs,
                             unsigned light)
 {
     fx_t ti;
-    uint8_t pi;
+    uint16_t pi;
     RT_COUNT(wk, tests);
     if (!rt_intersect(&objs[i], r, RT_EPS, tmax, &ti, &pi))
         return 0;

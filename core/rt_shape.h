@@ -6,10 +6,11 @@
 #include "rt_ray.h"
 
 /* Ray-object intersection: the nearest t with tmin < t < tmax. Returns 1
- * and sets *t and *part (which face, cap or side) on a hit, else 0. A kind
+ * and sets *t and *part (which face, cap or side; a mesh's triangle) on a
+ * hit, else 0. A kind
  * this build removed (RT_NO_SPHERE, ...) never hits. */
 int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
-                 fx_t *t, uint8_t *part);
+                 fx_t *t, uint16_t *part);
 
 /* Outward unit normal of o on the given part where ray r hits it at t.
  * *p is the hit point o + t d, rounded. With precise set (for a hit that
@@ -18,6 +19,6 @@ int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
  * where the ray meets it, rounded, and the normal is taken there: the
  * rounding of t and of p moves o + t d off the side (rt_normal.c). */
 fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *p,
-                  uint8_t part, int precise);
+                  uint16_t part, int precise);
 
 #endif /* RT_SHAPE_H */

@@ -98,7 +98,7 @@ int rt_thin_hit(const rt_thin *t, const rt_tracer *tr, rt_work *wk,
                 unsigned x, unsigned i, fx_t tmax, rt_ray *r, int *have_ray)
 {
     fx_t ti;
-    uint8_t pi;
+    uint16_t pi;
     (void)t;
     if (cf->n != 1)
         return 1;

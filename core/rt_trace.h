@@ -79,7 +79,7 @@ rt_rgb rt_trace_camera(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
 typedef struct {
     fx_t t;       /* distance along the ray; FX_MAX for none */
     uint16_t obj; /* object index, RT_NO_OBJECT for none */
-    uint8_t part;
+    uint16_t part; /* which face, cap or side; a mesh's triangle */
 } rt_hit;
 
 /* The first half of rt_trace_camera: the nearest hit of camera ray r of

@@ -270,7 +270,7 @@ RT_ALWAYS_INLINE static inline int upright_caps(const rt_object *o,
                                                 const rt_ray *r, int64_t tca,
                                                 const upright_frame *f,
                                                 int32_t ur, fx_t tmin,
-                                                fx_t *best, uint8_t *part)
+                                                fx_t *best, uint16_t *part)
 {
     const int sf = f->sf;
     const int64_t rim = (int64_t)RT_RIM_SLACK << (sf > 0 ? sf : 0);
@@ -304,7 +304,7 @@ RT_ALWAYS_INLINE static inline int upright_caps(const rt_object *o,
         if (x * x + z * z > fx_imul64(ur, ur) + ur * slack)
             continue;
         if (take(tw, tmin, best)) {
-            *part = (uint8_t)(1 + cap);
+            *part = (uint16_t)(1 + cap);
             found = 1;
         }
     }
@@ -317,10 +317,10 @@ RT_ALWAYS_INLINE static inline int upright_caps(const rt_object *o,
  * (with *t and *part) stands. */
 RT_COLD static int upright_thin(const rt_object *o, const rt_ray *r,
                                 int64_t tca, int64_t s0, fx_t tmin,
-                                fx_t tmax, int found, fx_t *t, uint8_t *part)
+                                fx_t tmax, int found, fx_t *t, uint16_t *part)
 {
     fx_t best = tmax;
-    uint8_t pt = 0;
+    uint16_t pt = 0;
     upright_frame f;
     frame_set(&f, o, r, tca);
     int side = thin_side(o, r, tca, &f, s0, tmin, &best);
@@ -337,7 +337,7 @@ RT_COLD static int upright_thin(const rt_object *o, const rt_ray *r,
 
 /* Cylinder (kind RT_CYLINDER) or cone, in the object's frame. */
 static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
-                       fx_t tmax, fx_t *t, uint8_t *part)
+                       fx_t tmax, fx_t *t, uint16_t *part)
 {
     int64_t tca, h[3];
     uint64_t disc;

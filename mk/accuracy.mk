@@ -72,7 +72,8 @@ SR_PORT_SRC := port/baremetal/common.c port/baremetal/semihost.c \
     port/baremetal/out_semihost.c \
     port/baremetal/libc.c port/baremetal/board_an385.c \
     port/baremetal/startup_cortexm.c
-SR_FP_SRC := bench/softref/main.c bench/softref/libm.c port/posix/ref_render.c \
+SR_FP_SRC := bench/softref/main.c bench/softref/libm.c \
+    bench/softref/no_mesh.c port/posix/ref_render.c \
     port/posix/ref_shapes.c
 SR_OBJ := $(CORE_SRC:%.c=$(SR_BUILD)/%.o) $(SR_PORT_SRC:%.c=$(SR_BUILD)/%.o) \
     $(SR_FP_SRC:%.c=$(SR_BUILD)/%.o) $(SR_BUILD)/scene.o

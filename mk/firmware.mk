@@ -128,7 +128,8 @@ FW_PORT_SRC := port/baremetal/common.c port/baremetal/semihost.c \
     $(FW_OUT_SRC) port/baremetal/libc.c $(FW_BOARD_SRC)
 FW_TABLES_C := $(FW_BUILD)/scene_tables.c
 # The scene parser's files, which a pruned build leaves out.
-FW_PARSER_SRC := core/rt_parse.c core/rt_parse_obj.c core/rt_lex.c \
+FW_PARSER_SRC := core/rt_parse.c core/rt_parse_obj.c core/rt_parse_mesh.c \
+    core/rt_lex.c \
     core/rt_lex_field.c
 ifeq ($(FW_APP),bringup)
 FW_SRC := $(FW_PORT_SRC) port/baremetal/bringup.c

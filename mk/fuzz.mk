@@ -29,7 +29,8 @@ FUZZ_SAN := -fsanitize=address,undefined -fno-sanitize-recover=all \
 FUZZ_CFLAGS := -std=c99 -O1 -g -D_POSIX_C_SOURCE=200809L -Wall -Wextra \
                $(FUZZ_SAN) -Icore -Iport/posix
 
-FUZZ_SRC := $(CORE_SRC) port/posix/ref_render.c port/posix/ref_shapes.c
+FUZZ_SRC := $(CORE_SRC) port/posix/ref_render.c port/posix/ref_shapes.c \
+    port/posix/ref_mesh.c
 FUZZ_OBJ := $(FUZZ_SRC:%.c=$(FUZZ_BUILD)/%.o)
 FUZZ_MAIN_OBJ := $(FUZZ_BUILD)/tests/fuzz/fuzz_scene.o
 

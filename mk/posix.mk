@@ -64,3 +64,17 @@ $(HOST_BUILD)/core $(HOST_BUILD)/port/posix:
 run: $(FIXTRACE)
 	$(FIXTRACE) -q -W 640 -H 480 -o seed.ppm scenes/seed.scene
 	@echo "wrote $(CURDIR)/seed.ppm (640x480)"
+
+# The model generator (tools/mkmodel.c) and the gallery's models, made by
+# it: `make models` regenerates scenes/models/.
+MKMODEL := $(HOST_BUILD)/mkmodel
+$(MKMODEL): tools/mkmodel.c $(HOST_CORE_OBJ) $(HOST_PORT_OBJ) $(HOST_STAMP)
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) -Icore -Iport/posix $(HOST_LDFLAGS) \
+	    tools/mkmodel.c $(HOST_PORT_OBJ) $(HOST_CORE_OBJ) -o $@ $(HOST_LIBS)
+
+.PHONY: models
+models: $(MKMODEL)
+	$(Q)mkdir -p scenes/models
+	$(Q)$(MKMODEL) icosphere 3 >scenes/models/icosphere.obj
+	$(Q)$(MKMODEL) torus 32 16 >scenes/models/torus.obj

@@ -23,6 +23,10 @@ int th_summary(void);
  * fixed seed checks the same inputs on every run. */
 uint64_t th_rnd64(uint64_t *state);
 
+/* The names of the files in scenes/ that end in .scene (run from the top),
+ * sorted, at most max, each malloc'd; returns how many. */
+int th_scene_names(char *names[], int max);
+
 #define CHECK(cond) th_check(!!(cond), __FILE__, __LINE__, #cond)
 
 /* Integer equality; prints both values on failure. */

@@ -175,7 +175,9 @@ quad corner -5 0 -5 edge1 0 0 10 edge2 10 0 0 material g
 box min 1 0 0 max 2 1 1 material a
 cylinder base -2 0 0 radius 0.5 height 1 material a
 cone base 2 0 2 radius 0.5 height 1 material a
+mesh file tri.obj material a
 EOF2
+printf 'v 0 0 3\nv 1 0 3\nv 0 1 3\nf 1 2 3\n' >"$tmp/tri.obj"
 expect 0 '^# .*all.scene needs every effect at 4 spp' -- "$FT" --build-flags "$tmp/all.scene"
 [ "$(cat "$tmp/out")" = "" ] && ok || bad "--build-flags printed '$(cat "$tmp/out")' for a scene that needs every effect"
 expect 0 '' -- "$FT" --build-flags -s 1 "$tmp/all.scene"

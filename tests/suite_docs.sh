@@ -195,7 +195,7 @@ fi
 # Statements in code blocks (fenced, or indented by 4) before "## Errors",
 # with backslash continuations joined.
 KW="image camera background ambient shadows light material"
-KW="$KW sphere quad box cylinder cone"
+KW="$KW sphere quad box cylinder cone mesh"
 awk -v kw=" $KW " '
     /^## Errors/ { exit }
     /^```/ { fence = !fence; next }
@@ -215,6 +215,8 @@ awk -v kw=" $KW " '
     }' docs/scene-format.md >"$tmp/statements"
 
 CAM="camera eye 0 2 -8 look 0 0 0"
+# The mesh examples name the gallery's models, relative to the scene.
+cp -r scenes/models "$tmp/models"
 n=0
 while IFS= read -r stmt; do
     n=$((n + 1))
@@ -275,7 +277,7 @@ kws=$(ask "$CAM\nzzz 1\n")
 for k in $kws; do
     has_example "$k" && ok || bad "docs/scene-format.md has no example of '$k'"
 done
-for k in image light camera material sphere quad box cylinder cone; do
+for k in image light camera material sphere quad box cylinder cone mesh; do
     case $k in
     image) probe="$CAM\nimage 8 8 zzz 1\n" ;;
     light) probe="$CAM\nlight 0 0 0 zzz 1\n" ;;

@@ -31,6 +31,7 @@ pick_other() {
     local s
     for s in "${FW_TEST_SCENE:-}" scenes/primitives.scene scenes/*.scene; do
         [ -f "$s" ] && [ "$s" != "$SEED" ] || continue
+        grep -q '^mesh ' "$s" && continue # text on the device: no meshes
         awk '$1 ~ /^(sphere|quad|box|cylinder|cone)$/ { o++ }
              $1 == "material" { m++ } $1 == "light" { l++ }
              END { exit !(o <= 16 && m <= 12 && l <= 2) }' "$s" &&
@@ -39,6 +40,8 @@ pick_other() {
     echo "$SEED"
 }
 OTHER=$(pick_other)
+# A scene with triangle meshes (tables in flash; refused as text).
+MESHES=${FW_TEST_MESHES:-scenes/meshes.scene}
 
 # Soft-float and soft-double helpers of libgcc (ARM EABI and generic names).
 SOFT_FLOAT='__aeabi_([fd][a-z0-9]+|[a-z0-9]+2[fd]z?)$|__(add|sub|mul|div|neg|cmp|eq|ne|lt|le|gt|ge|unord|extend|trunc)[sdtx]f[0-9]*$|__(float|fix)[a-z]*[sdtx]f[a-z0-9]*$'
@@ -140,6 +143,14 @@ run_board() {
     # every board: the same bytes as the host's draft.
     render "$(basename "$SEED" .scene) ${W}x$H draft 64" "$SEED" $W $H \
         "$tmp/seed-draft.ppm" "$TIMEOUT" DRAFT=64
+    # The meshes as tables in flash, on every board they fit.
+    if fw firmware SCENE="$MESHES" WIDTH=$W HEIGHT=$H ||
+        ! grep -q "overflowed" "$tmp/$b.log"; then
+        render "$(basename "$MESHES" .scene) ${W}x$H tables" "$MESHES" $W $H \
+            "$tmp/meshes.ppm"
+    else
+        res "SKIPPED: $b $MESHES: its meshes do not fit the flash"
+    fi
 
     case $b in
     an385)
@@ -163,6 +174,21 @@ run_board() {
             res ok
         else
             res "FAILED: $b missing scene: $(head -c 300 "$tmp/$b.log")"
+        fi
+        # A mesh in a scene parsed on the device: refused, with the way
+        # out (PRUNE=1 carries meshes as tables).
+        if fw firmware SCENE="$MESHES" PRUNE=0; then
+            want_rc=2 run_qemu "mesh as text" "$TIMEOUT" SCENE="$MESHES" \
+                PRUNE=0
+            if [ "$rc" = 2 ] && grep -q "PRUNE=1" "$tmp/$b.log"; then
+                res ok
+            else
+                res "FAILED: $b mesh as text: exit $rc, want 2 naming" \
+                    "PRUNE=1: $(head -c 300 "$tmp/$b.log")"
+            fi
+        else
+            res "FAILED: $b mesh as text: PRUNE=0 build failed:" \
+                "$(head -c 300 "$tmp/$b.log")"
         fi
         if fw firmware SCENE="$tmp/bad.scene" PRUNE=0; then
             want_rc=2 run_qemu "bad scene" "$TIMEOUT" \
@@ -246,7 +272,7 @@ if [ ! -x "$FT" ]; then
     exit 1
 fi
 for r in "seed $SEED $W $H" "other $OTHER $W $H" "seed320 $SEED 320 240" \
-    "seed-draft $SEED $W $H --draft 64"; do
+    "seed-draft $SEED $W $H --draft 64" "meshes $MESHES $W $H"; do
     set -- $r
     if ! "$FT" -q -W "$3" -H "$4" -o "$tmp/$1.ppm" "${@:5}" "$2" \
         2>"$tmp/host.err"
@@ -256,7 +282,7 @@ for r in "seed $SEED $W $H" "other $OTHER $W $H" "seed320 $SEED 320 240" \
         exit 1
     fi
 done
-echo "scenes: $SEED and $OTHER"
+echo "scenes: $SEED, $OTHER and $MESHES"
 
 # Every board that has a mk/boards/<board>.mk, with the tools its
 # architecture needs.

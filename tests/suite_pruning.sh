@@ -129,7 +129,7 @@ caps() {
     echo $out
 }
 want_caps() {
-    awk '$1 ~ /^(sphere|quad|box|cylinder|cone)$/ { o++ }
+    awk '$1 ~ /^(sphere|quad|box|cylinder|cone|mesh)$/ { o++ }
          $1 == "material" { m++ } $1 == "light" { l++ }
          END { print (o ? o : 1), (m ? m : 1), (l ? l : 1) }' "$1"
 }
@@ -146,6 +146,10 @@ elif syms pruned | grep -qx fw_scene; then
 else
     bad "the pruned firmware has no fw_scene tables"
 fi
+# A scene without meshes: no mesh code in its firmware.
+syms pruned | grep -qE '^rt_mesh_' &&
+    bad "the pruned firmware links the mesh code:" \
+        "$(syms pruned | grep -E '^rt_mesh_' | tr '\n' ' ')" || ok
 # rt_parse is linked as rt_parse_cfg_o<N>_m<N>_l<N> (core/rt_scene.h).
 syms full | grep -qE '^rt_parse(_cfg_[a-z0-9_]+)?$' &&
     syms full | grep -qx fw_scene_text && ok ||

@@ -39,7 +39,7 @@ static void random_object(rt_object *o, double spread)
     double s = logu(1.0 / 64, 64);
     double x = uni(-spread, spread), y = uni(-spread, spread);
     double z = uni(-spread, spread);
-    o->kind = (uint8_t)(th_rnd64(&rng) % RT_KIND_COUNT);
+    o->kind = (uint8_t)(th_rnd64(&rng) % RT_MESH); /* the analytic kinds */
     o->caps = RT_CAP_BOTTOM | RT_CAP_TOP;
     o->a = v3(x, y, z);
     o->r = D2F(s);
@@ -94,7 +94,7 @@ static void check_ray(const rt_scene *s, const rt_ray *r, fx_t tmax,
 {
     for (unsigned i = 0; i < s->n_objects; i++) {
         fx_t t;
-        uint8_t part;
+        uint16_t part;
         if (!rt_intersect(&s->obj[i], r, RT_EPS, tmax, &t, &part))
             continue;
         ++*hits;

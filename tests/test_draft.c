@@ -11,12 +11,12 @@
  *   the full render (within 8 levels, the interpolation's rounding and
  *   shading), at any threshold.
  */
-#include <dirent.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli_util.h"
 #include "harness.h"
+#include "mesh_obj.h"
 #include "rt_parse.h"
 #include "rt_render.h"
 
@@ -185,28 +185,13 @@ static void check_thin(void)
     }
 }
 
-static int cmp_names(const void *a, const void *b)
-{
-    return strcmp(*(const char *const *)a, *(const char *const *)b);
-}
-
 int main(void)
 {
     static rt_scene scene;
     char *names[256];
-    int count = 0;
+    static mesh_obj_ctx meshes;
     char err[256];
-    DIR *d = opendir("scenes");
-    struct dirent *e;
-    CHECK(d != NULL);
-    while (d && (e = readdir(d)) != NULL && count < 256) {
-        size_t n = strlen(e->d_name);
-        if (n > 6 && strcmp(e->d_name + n - 6, ".scene") == 0)
-            names[count++] = strdup(e->d_name);
-    }
-    if (d)
-        closedir(d);
-    qsort(names, (size_t)count, sizeof names[0], cmp_names);
+    int count = th_scene_names(names, 256);
     CHECK(count >= 2);
     for (int i = 0; i < count; i++) {
         char path[512];
@@ -214,8 +199,12 @@ int main(void)
         snprintf(path, sizeof path, "scenes/%s", names[i]);
         char *text = cli_read_file(path, &len, err, sizeof err);
         rt_parse_error pe;
+        /* A scene's meshes are kept until the next scene's. */
+        mesh_obj_free(&meshes);
+        mesh_obj_init(&meshes, path, stdout, 1);
         if (CHECK(text != NULL) &&
-            CHECK(rt_parse(text, len, &scene, &pe) == RT_OK))
+            CHECK(mesh_obj_parse_scene(text, len, path, &scene, &pe,
+                                       &meshes) == RT_OK))
             check_scene(names[i], &scene);
         free(text);
         free(names[i]);
@@ -230,5 +219,6 @@ int main(void)
     CHECK_EQ(plain, rt_row_bytes(&o));
     o.draft = 1;
     CHECK(rt_buffer_bytes(&o) > plain);
+    mesh_obj_free(&meshes);
     return th_summary();
 }

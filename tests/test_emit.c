@@ -21,6 +21,8 @@
 #include "harness.h"
 #include "cli_util.h"
 #include "emit_c.h"
+#include "emit_dump.h"
+#include "mesh_obj.h"
 #include "rt_parse.h"
 #include "rt_render.h"
 
@@ -35,6 +37,8 @@ typedef struct {
 
 static entry list[MAX_SCENES];
 static int count;
+/* The meshes the scenes name, kept for the whole run. */
+static mesh_obj_ctx meshes;
 static char tmp[64];
 static const char *cc;
 
@@ -67,7 +71,10 @@ static int add_dir(const char *dir, int must_parse)
         rt_parse_error pe;
         char *text = cli_read_file(list[i].path, &len, err, sizeof err);
         rt_scene *s = malloc(sizeof *s);
-        rt_status st = text && s ? rt_parse(text, len, s, &pe) : RT_ERR_ARG;
+        rt_status st = text && s ? mesh_obj_parse_scene(text, len,
+                                                        list[i].path, s, &pe,
+                                                        &meshes)
+                                 : RT_ERR_ARG;
         free(text);
         if (st == RT_OK) {
             list[first + added].scene = s;
@@ -148,7 +155,7 @@ static int write_sources(void)
     f = fopen(path, "w");
     if (!CHECK(f != NULL))
         return -1;
-    fprintf(f, "#include <stdio.h>\n#include \"rt_scene.h\"\n");
+    fprintf(f, "#include <stdio.h>\n#include \"emit_dump.h\"\n");
     for (int i = 0; i < count; i++)
         fprintf(f, "#define fw_scene fw_scene_%d\n#include \"s%d.c\"\n"
                 "#undef fw_scene\n#undef FW_SCENE_OBJECTS\n"
@@ -160,7 +167,7 @@ static int write_sources(void)
             "    FILE *f = argc > 1 ? fopen(argv[1], \"wb\") : NULL;\n"
             "    size_t n = sizeof all / sizeof all[0];\n"
             "    for (size_t i = 0; f && i < n; i++)\n"
-            "        fwrite(all[i], sizeof *all[i], 1, f);\n"
+            "        emit_dump(f, all[i]);\n"
             "    return !f || fclose(f) != 0;\n}\n");
     CHECK_EQ(fclose(f), 0);
     return 0;
@@ -196,8 +203,8 @@ static void check_round_trip(void)
 {
     char cmd[1024], set[256], path[128];
     settings(set, sizeof set);
-    snprintf(cmd, sizeof cmd, "%s " STRICT " %s -o %s/checker %s/checker.c",
-             cc, set, tmp, tmp);
+    snprintf(cmd, sizeof cmd, "%s " STRICT " -Itests %s -o %s/checker "
+             "%s/checker.c", cc, set, tmp, tmp);
     if (!CHECK(run(cmd) == 0)) {
         show_log();
         return;
@@ -214,18 +221,39 @@ static void check_round_trip(void)
     rt_scene *back = malloc(sizeof *back);
     for (int i = 0; back && i < count; i++) {
         const rt_scene *s = list[i].scene;
-        if (!CHECK(fread(back, sizeof *back, 1, f) == 1))
+        /* The parsed scene's dump, then as many bytes of the compiled
+         * one's. */
+        char *want = NULL;
+        size_t n = 0;
+        FILE *mf = open_memstream(&want, &n);
+        if (!CHECK(mf != NULL))
             break;
-        const unsigned char *a = (const unsigned char *)s;
-        const unsigned char *b = (const unsigned char *)back;
+        emit_dump(mf, s);
+        fclose(mf);
+        unsigned char *got = malloc(n);
+        if (!CHECK(got && fread(got, 1, n, f) == n)) {
+            free(got);
+            free(want);
+            break;
+        }
+        const unsigned char *a = (const unsigned char *)want;
         size_t k = 0;
-        while (k < sizeof *s && a[k] == b[k])
+        while (k < n && a[k] == got[k])
             k++;
-        if (!CHECK(k == sizeof *s))
+        if (!CHECK(k == n))
             printf("    %s: the compiled scene differs at byte %zu "
-                   "(obj[0] is at %zu, mat[0] at %zu, light[0] at %zu)\n",
+                   "(obj[0] is at %zu, mat[0] at %zu, light[0] at %zu; "
+                   "meshes from %zu)\n",
                    list[i].path, k, offsetof(rt_scene, obj),
-                   offsetof(rt_scene, mat), offsetof(rt_scene, light));
+                   offsetof(rt_scene, mat), offsetof(rt_scene, light),
+                   sizeof *s);
+        /* The compiled scene back, its meshes the parsed ones (equal,
+         * as the dumps are). */
+        memcpy(back, got, sizeof *back);
+        for (unsigned j = 0; j < back->n_objects && j < RT_MAX_OBJECTS; j++)
+            back->obj[j].mesh = s->obj[j].mesh;
+        free(got);
+        free(want);
         /* Rendering is for our own scenes: the fuzz corpus is there to
          * break the renderer (tests/suite_fuzz.sh), not this round trip. */
         if (strncmp(list[i].path, "scenes/", 7) != 0)
@@ -306,5 +334,6 @@ int main(void)
         printf("could not remove %s\n", tmp);
     for (int i = 0; i < count; i++)
         free(list[i].scene);
+    mesh_obj_free(&meshes);
     return th_summary();
 }

@@ -579,7 +579,7 @@ static void test_statement_errors(void)
     BAD("sphre", PE, 1, 1,
         "unknown keyword 'sphre' (expected one of: image light camera "
         "background ambient shadows material sphere quad box cylinder "
-        "cone)");
+        "cone mesh)");
     /* shadows on|off, once. */
     {
         static rt_scene sh;

@@ -8,12 +8,12 @@
  * - the RGB565 formats agree with the RGB888 render.
  * UPDATE_CHECKSUMS=1 rewrites the stored file (make update-checksums).
  */
-#include <dirent.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli_util.h"
 #include "harness.h"
+#include "mesh_obj.h"
 #include "rt_parse.h"
 #include "rt_render.h"
 
@@ -54,11 +54,6 @@ static rt_status render(const rt_scene *s, rt_options *o, uint8_t *img,
     return st;
 }
 
-static int cmp_names(const void *a, const void *b)
-{
-    return strcmp(*(const char *const *)a, *(const char *const *)b);
-}
-
 static const char *stored_sum(const char *stored, const char *name)
 {
     static char hex[17];
@@ -76,9 +71,10 @@ static const char *stored_sum(const char *stored, const char *name)
 int main(void)
 {
     static rt_scene scene;
+    static mesh_obj_ctx meshes;
     static uint8_t img[TW * TH * 3], img2[TW * TH * 3], img565[TW * TH * 2];
     char *names[256];
-    int count = 0;
+    int count;
     int update = getenv("UPDATE_CHECKSUMS") != NULL;
     size_t slen = 0;
     char err[256];
@@ -86,17 +82,7 @@ int main(void)
                                                  sizeof err);
     FILE *out = update ? fopen(CHECKSUMS, "w") : NULL;
 
-    DIR *d = opendir("scenes");
-    CHECK(d != NULL);
-    struct dirent *e;
-    while (d && (e = readdir(d)) != NULL && count < 256) {
-        size_t n = strlen(e->d_name);
-        if (n > 6 && strcmp(e->d_name + n - 6, ".scene") == 0)
-            names[count++] = strdup(e->d_name);
-    }
-    if (d)
-        closedir(d);
-    qsort(names, (size_t)count, sizeof names[0], cmp_names);
+    count = th_scene_names(names, 256);
     CHECK(count >= 2);
 
     for (int i = 0; i < count; i++) {
@@ -107,7 +93,12 @@ int main(void)
         char *text = cli_read_file(path, &len, err, sizeof err);
         if (!CHECK(text != NULL))
             continue;
-        rt_status st = rt_parse(text, len, &scene, &pe);
+        /* Meshes of the scene before are released; this one's are kept
+         * until the next (or the end). */
+        mesh_obj_free(&meshes);
+        mesh_obj_init(&meshes, path, stdout, 1);
+        rt_status st = mesh_obj_parse_scene(text, len, path, &scene, &pe,
+                                            &meshes);
         free(text);
         if (!CHECK(st == RT_OK)) {
             printf("    %s:%u:%u: %s\n", path, (unsigned)pe.line,
@@ -166,5 +157,6 @@ int main(void)
     if (out)
         fclose(out);
     free(stored);
+    mesh_obj_free(&meshes);
     return th_summary();
 }

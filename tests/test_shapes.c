@@ -49,7 +49,7 @@ static void expect_hit(const rt_object *o, rt_ray r, double t_want,
                        int line)
 {
     fx_t t;
-    uint8_t part;
+    uint16_t part;
     int hit = rt_intersect(o, &r, RT_EPS, FX_MAX, &t, &part);
     if (!th_check(hit, __FILE__, line, "expected a hit"))
         return;
@@ -68,7 +68,7 @@ static void expect_hit(const rt_object *o, rt_ray r, double t_want,
 static void expect_miss(const rt_object *o, rt_ray r, int line)
 {
     fx_t t;
-    uint8_t part;
+    uint16_t part;
     th_check(!rt_intersect(o, &r, RT_EPS, FX_MAX, &t, &part), __FILE__, line,
              "expected a miss");
 }
@@ -192,7 +192,7 @@ static void random_spheres(void)
         double hx = ccx - b * ddx, hz = ccz - b * ddz;
         double h2 = hx * hx + hz * hz, disc = rr * rr - h2;
         fx_t t;
-        uint8_t part;
+        uint16_t part;
         int hit = rt_intersect(&s, &ry, RT_EPS, FX_MAX, &t, &part);
         n++;
         if (fabs(sqrt(h2) - rr) < 1e-3)
@@ -258,7 +258,7 @@ static void random_cylinder_normals(void)
         double oy = 2 * unif(&x);
         rt_ray ry = ray(ox, oy, oz, tx - ox, ty - oy, tz - oz);
         fx_t t;
-        uint8_t part;
+        uint16_t part;
         if (!rt_intersect(&c, &ry, RT_EPS, FX_MAX, &t, &part) || part != 0)
             continue;
         /* The fixed-point ray exactly, in double: its side root nearest
@@ -341,7 +341,7 @@ static void flat_quads(void)
             double tz = cz + a * F2D(o.b.z) + b * F2D(o.c.z);
             rt_ray r = ray(ox, oy, oz, tx - ox, cy - oy + 1e-3, tz - oz);
             fx_t t1 = 0, t2 = 0;
-            uint8_t p1 = 0, p2 = 0;
+            uint16_t p1 = 0, p2 = 0;
             int h1 = rt_intersect(&o, &r, RT_EPS, FX_MAX, &t1, &p1);
             int h2 = rt_intersect(&g, &r, RT_EPS, FX_MAX, &t2, &p2);
             n++;

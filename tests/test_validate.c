@@ -74,6 +74,10 @@ int main(void)
     CHECK_EQ(render(&s, &o, &rows), RT_ERR_ARG);
     s.obj[0].kind = RT_KIND_COUNT;
     CHECK_EQ(render(&s, &o, &rows), RT_ERR_ARG);
+    /* A mesh without its tables. */
+    s.obj[0].kind = RT_MESH;
+    s.obj[0].mesh = NULL;
+    CHECK_EQ(render(&s, &o, &rows), RT_ERR_ARG);
     s.obj[0].kind = RT_SPHERE;
 
     /* Counts past the arrays. */

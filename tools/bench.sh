@@ -110,6 +110,8 @@ if [ $QUICK = 0 ]; then
     awk -v a="$t_fix" -v b="$t_ref" 'BEGIN{r = a / b; printf "| host: fixed <= 1.5x the time of the double reference | %.2fx (noisy) | %s |\n", r, (r <= 1.5 ? "yes" : "no")}'
     awk -v a="$t_j1" -v b="$t_j2" 'BEGIN{r = a / b; printf "| -j 2 scales >= 1.8x on 2 cores | %.2fx (noisy) | %s |\n", r, (r >= 1.8 ? "yes" : "no")}'
     echo
+    MAKE="$MAKE" W=$W H=$H bash tools/mesh_bench.sh
+    echo
     echo "## Math and intersection routines (instructions per call)"
     echo
     echo "From \`bench/fxbench/run.sh\`: each operation over 10,000 inputs in"

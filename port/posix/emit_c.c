@@ -17,6 +17,7 @@
 #include <stdarg.h>
 
 #include "emit_c.h"
+#include "rt_mesh.h"
 
 /* The settings the parsed values depend on: the derived fields hold unit
  * vectors with RT_UNIT_BITS fraction bits, and a scene without a depth
@@ -92,7 +93,7 @@ static void put_uint(emitter *e, const char *name, unsigned long v)
 }
 
 static const char *const kind_name[RT_KIND_COUNT] = {
-    "RT_SPHERE", "RT_QUAD", "RT_BOX", "RT_CYLINDER", "RT_CONE"
+    "RT_SPHERE", "RT_QUAD", "RT_BOX", "RT_CYLINDER", "RT_CONE", "RT_MESH"
 };
 
 static const char *const texture_name[] = {
@@ -159,6 +160,55 @@ static void put_object(emitter *e, const rt_object *o)
     put_fx(e, "k", o->k);
 }
 
+/* The tables of mesh object i, as constants named fw_mesh<i>_*, and the
+ * rt_mesh fw_mesh<i> that points at them. */
+static void put_mesh(emitter *e, const rt_mesh *m, unsigned i)
+{
+    char bx[I32_CHARS], by[I32_CHARS], bz[I32_CHARS];
+    put(e, "/* Object %u: a mesh of %u triangles, %u vertices, %u nodes. */",
+        i, m->n_tris, m->n_verts, m->n_nodes);
+    put(e, "static const fx_vec3 fw_mesh%u_v[%u] = {", i, m->n_verts);
+    for (unsigned k = 0; k < m->n_verts; k++)
+        put(e, "    {%s, %s, %s},", i32(bx, m->v[k].x), i32(by, m->v[k].y),
+            i32(bz, m->v[k].z));
+    put(e, "};");
+    if (m->vn) {
+        put(e, "static const fx_dir3 fw_mesh%u_vn[%u] = {", i, m->n_verts);
+        for (unsigned k = 0; k < m->n_verts; k++)
+            put(e, "    {%s, %s, %s},", i32(bx, m->vn[k].x),
+                i32(by, m->vn[k].y), i32(bz, m->vn[k].z));
+        put(e, "};");
+    }
+    put(e, "static const uint16_t fw_mesh%u_tri[%u] = {", i, 3u * m->n_tris);
+    for (unsigned k = 0; k < m->n_tris; k++)
+        put(e, "    %u, %u, %u,", m->tri[3 * k], m->tri[3 * k + 1],
+            m->tri[3 * k + 2]);
+    put(e, "};");
+    put(e, "static const rt_mesh_node fw_mesh%u_node[%u] = {", i, m->n_nodes);
+    for (unsigned k = 0; k < m->n_nodes; k++) {
+        const rt_mesh_node *n = &m->node[k];
+        put(e, "    {{%u, %u, %u, %u, %u, %u}, %u, %u},", n->box[0], n->box[1],
+            n->box[2], n->box[3], n->box[4], n->box[5], n->a, n->n);
+    }
+    put(e, "};");
+    put(e, "static const rt_mesh fw_mesh%u = {", i);
+    e->indent++;
+    put(e, ".v = fw_mesh%u_v,", i);
+    if (m->vn)
+        put(e, ".vn = fw_mesh%u_vn,", i);
+    put(e, ".tri = fw_mesh%u_tri,", i);
+    put(e, ".node = fw_mesh%u_node,", i);
+    put_uint(e, "n_verts", m->n_verts);
+    put_uint(e, "n_tris", m->n_tris);
+    put_uint(e, "n_nodes", m->n_nodes);
+    put_uint(e, "qshift", m->qshift);
+    put_uint(e, "depth", m->depth);
+    put_vec(e, "lo", m->lo);
+    e->indent--;
+    put(e, "};");
+    fputc('\n', e->f);
+}
+
 static void put_light(emitter *e, const rt_light *l)
 {
     put_vec(e, "pos", l->pos);
@@ -181,6 +231,8 @@ static void put_light_i(emitter *e, const rt_scene *s, unsigned i)
 static void put_obj_i(emitter *e, const rt_scene *s, unsigned i)
 {
     put_object(e, &s->obj[i]);
+    if (s->obj[i].mesh)
+        put(e, ".mesh = &fw_mesh%u,", i);
 }
 
 /* The used entries of an array member; none at all when it is empty
@@ -237,7 +289,7 @@ int emit_c_scene(FILE *f, const rt_scene *s, const char *source)
           " 1.0); the\n"
           " * derived fields are the host's, which are exact on the device"
           " too.\n */\n", f);
-    put(&e, "#include \"rt_scene.h\"");
+    put(&e, "#include \"rt_mesh.h\"");
     fputc('\n', f);
     put(&e, "/* The scene's counts, at least 1 (they size arrays). */");
     put(&e, "#define FW_SCENE_OBJECTS %u", at_least_1(n_obj));
@@ -253,6 +305,9 @@ int emit_c_scene(FILE *f, const rt_scene *s, const char *source)
     fputc('\n', f);
     put_settings_guard(f);
     fputc('\n', f);
+    for (unsigned i = 0; i < n_obj; i++)
+        if (s->obj[i].kind == RT_MESH && s->obj[i].mesh)
+            put_mesh(&e, s->obj[i].mesh, i);
     put(&e, "const rt_scene fw_scene = {");
     e.indent++;
     put(&e, ".cam = {");

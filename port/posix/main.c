@@ -20,6 +20,7 @@
 #include "cli_util.h"
 #include "compare.h"
 #include "emit_c.h"
+#include "mesh_obj.h"
 #include "image_out.h"
 #include "progress.h"
 #include "receive.h"
@@ -564,13 +565,20 @@ int main(int argc, char **argv)
     }
     static rt_scene scene;
     rt_parse_error pe;
-    rt_status st = rt_parse(text, len, &scene, &pe);
+    /* The meshes live until the process ends, as the scene does. */
+    static mesh_obj_ctx meshes;
+    mesh_obj_init(&meshes, c.scene_path, stderr, c.quiet);
+    rt_status st = mesh_obj_parse_scene(text, len, c.scene_path, &scene, &pe,
+                                        &meshes);
     if (st != RT_OK) {
         cli_print_parse_error(stderr, c.scene_path, text, len, &pe);
         free(text);
         return 2;
     }
     free(text);
+    if (c.stats && meshes.n_mesh > 0)
+        fprintf(stderr, "mesh_triangles %lu\nmesh_ignored_statements %lu\n",
+                meshes.triangles, meshes.ignored);
     if (c.build_flags)
         return print_build_flags(&c, &scene);
     if (c.emit_c)

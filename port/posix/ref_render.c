@@ -135,6 +135,8 @@ static rt_status load_scene(const rt_scene *s, int depth, ref_scene *rs)
         ref_shape_from_object(ob, &rs->shape[i]);
         if (!ref_shape_ok(&rs->shape[i]))
             return RT_ERR_DEGENERATE;
+        if (ob->kind == RT_MESH && ref_mesh_setup(&rs->shape[i]) != 0)
+            return RT_ERR_CAPACITY;
         rs->mat_of[i] = ob->material;
     }
     return RT_OK;
@@ -388,10 +390,8 @@ rt_status ref_render_rows(const rt_scene *s, const rt_options *o, int y0,
         return RT_ERR_ARG;
     memset(&rs, 0, sizeof rs);
     st = load_scene(s, o->depth, &rs);
-    if (st != RT_OK)
-        return st;
     rs.stats = stats;
-    for (y = y0; y < y1; y++) {
+    for (y = y0; st == RT_OK && y < y1; y++) {
         size_t nbytes = (size_t)o->width * (o->format == RT_RGB888 ? 3 : 2);
         for (x = 0; x < o->width; x++) {
             uint8_t rgb[3];
@@ -399,7 +399,9 @@ rt_status ref_render_rows(const rt_scene *s, const rt_options *o, int y0,
             store(row_buf, o, x, y, rgb);
         }
         if (fn(ctx, y, row_buf, nbytes))
-            return RT_ERR_ABORTED;
+            st = RT_ERR_ABORTED;
     }
-    return RT_OK;
+    for (x = 0; x < RT_MAX_OBJECTS; x++)
+        ref_mesh_release(&rs.shape[x]);
+    return st;
 }

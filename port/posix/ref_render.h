@@ -37,6 +37,9 @@ typedef struct {
     ref_vec3 b;    /* quad: edge1; box: max */
     ref_vec3 c;    /* quad: edge2 */
     double r, h;   /* radius, height */
+    const struct rt_mesh *mesh; /* mesh: its triangles (the scene's) */
+    struct ref_mesh_boxes *boxes; /* mesh: the reference's own boxes
+                      (ref_mesh_setup), or NULL to test every triangle */
 } ref_shape;
 
 /* The nearest hit of a ray on one shape. */
@@ -58,6 +61,17 @@ int ref_intersect(const ref_shape *sh, ref_vec3 o, ref_vec3 d, double tmax,
 
 /* The bump lattice value at an integer point, exactly as the spec's hash
  * defines it: a multiple of 2^-16 in [-1, 1). */
+/* A mesh shape's own bounding boxes (port/posix/ref_mesh.c): a speed-up
+ * only, the hits are the same without. Returns 0, or -1 out of memory. */
+int ref_mesh_setup(ref_shape *sh);
+
+/* Releases what ref_mesh_setup made. */
+void ref_mesh_release(ref_shape *sh);
+
+/* The mesh's nearest hit, as ref_intersect. */
+int ref_mesh_hit(const ref_shape *sh, ref_vec3 o, ref_vec3 d, double tmax,
+                 ref_hit *hit);
+
 double ref_lattice(uint32_t seed, int32_t ix, int32_t iy, int32_t iz);
 
 /* Value noise at u: smoothstep-weighted trilinear interpolation of the

@@ -9,6 +9,7 @@
 #include <math.h>
 #include <string.h>
 #include "ref_internal.h"
+#include "rt_mesh.h"
 
 void ref_shape_from_object(const rt_object *obj, ref_shape *sh)
 {
@@ -24,8 +25,9 @@ void ref_shape_from_object(const rt_object *obj, ref_shape *sh)
     if (sh->kind == RT_CONE)
         sh->caps &= RT_CAP_BOTTOM; /* a cone has no top cap */
     /* Every shape bounds a convex solid (an open cylinder or cone too):
-     * a ray leaving its outside cannot meet it again. */
-    sh->convex = 1;
+     * a ray leaving its outside cannot meet it again. A mesh need not. */
+    sh->convex = sh->kind != RT_MESH;
+    sh->mesh = obj->mesh;
 }
 
 /* Keeps t if it is a nearer acceptable hit than *best. */
@@ -243,6 +245,8 @@ int ref_intersect(const ref_shape *sh, ref_vec3 o, ref_vec3 d, double tmax,
         return hit_cylinder(sh, o, d, tmax, hit);
     case RT_CONE:
         return hit_cone(sh, o, d, tmax, hit);
+    case RT_MESH:
+        return ref_mesh_hit(sh, o, d, tmax, hit);
     default:
         return 0;
     }
@@ -257,6 +261,8 @@ int ref_shape_ok(const ref_shape *sh)
         return len(cross(sh->b, sh->c)) > 0;
     case RT_BOX:
         return sh->b.x > sh->a.x && sh->b.y > sh->a.y && sh->b.z > sh->a.z;
+    case RT_MESH:
+        return sh->mesh != NULL && sh->mesh->n_tris > 0;
     default:
         return sh->r > 0 && sh->h > 0;
     }

@@ -51,8 +51,9 @@ static void require(int ok, const char *what)
 static void check_error(const rt_parse_error *e, size_t size, rt_status st)
 {
     require(st == RT_ERR_PARSE || st == RT_ERR_CAPACITY ||
-                st == RT_ERR_DEGENERATE,
-            "rt_parse returns OK, PARSE, CAPACITY or DEGENERATE");
+                st == RT_ERR_DEGENERATE || st == RT_ERR_UNSUPPORTED,
+            "rt_parse returns OK, PARSE, CAPACITY, DEGENERATE or "
+            "UNSUPPORTED (a mesh)");
     require(memchr(e->msg, '\0', sizeof e->msg) != NULL,
             "error message is NUL-terminated");
     require(e->msg[0] != '\0', "error message is not empty");

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Stability cases: refraction, lights, recursion and sampling, image
  * sizes, properties, and the scenes in scenes/. */
+#include "mesh_obj.h"
 #include "stability.h"
 
 /* ==== Refraction ========================================================= */
@@ -611,6 +612,9 @@ void case_adaptive_bands_deterministic(void)
 
 /* ==== The scenes in scenes/ ============================================== */
 
+/* The meshes of the scene last read from scenes/. */
+static mesh_obj_ctx meshes;
+
 static int cmp_names(const void *a, const void *b)
 {
     return strcmp(*(const char *const *)a, *(const char *const *)b);
@@ -646,7 +650,12 @@ void case_scenes_no_speckles(void)
             free(names[i]);
             continue;
         }
-        rt_status st = rt_parse(text, len, &scene_a, &pe);
+        /* Meshes of the scene before are released; this one's are kept
+         * until the next (or the end). */
+        mesh_obj_free(&meshes);
+        mesh_obj_init(&meshes, path, stdout, 1);
+        rt_status st = mesh_obj_parse_scene(text, len, path, &scene_a, &pe,
+                                            &meshes);
         free(text);
         if (!CHECK(st == RT_OK)) {
             printf("    %s:%u:%u: %s\n", path, (unsigned)pe.line,
@@ -667,6 +676,7 @@ void case_scenes_no_speckles(void)
             CHECK_EQ(v.acne, 0);
         free(names[i]);
     }
+    mesh_obj_free(&meshes);
     if (!CHECK(seen_seed))
         printf("    scenes/seed.scene is missing\n");
 }

@@ -13,7 +13,7 @@ void case_tangent_sphere_exact(void)
     rt_object s = sphere(0, 0, 5, 1);
     rt_ray r = ray_raw(V(0, 1, 0), V(0, 0, 1));
     double t;
-    uint8_t part;
+    uint16_t part;
     if (CHECK(cast(&s, &r, &t, &part))) {
         CHECK(fabs(t - 5) <= 1.0 / 65536);
         CHECK(nerr(normal_at(&s, &r, t, part), 0, 1, 0) < 1e-4);
@@ -263,7 +263,7 @@ void case_tiny_sphere_3ulp(void)
     CHECK_EQ(rt_object_prepare(&s), RT_OK);
     rt_ray r = ray_raw(fx_v3(0, 0, 0), fx_v3(0, 0, FX_ONE));
     double t;
-    uint8_t part;
+    uint16_t part;
     if (CHECK(cast(&s, &r, &t, &part))) {
         CHECK_EQ(D2F(t), FX_ONE - 3);
         CHECK(nerr(normal_at(&s, &r, t, part), 0, 0, -1) < 1e-4);
@@ -287,7 +287,7 @@ void case_tiny_upright_4ulp(void)
     CHECK_EQ(rt_object_prepare(&k), RT_OK);
     rt_ray down = ray_raw(fx_v3(0, FX_ONE, 0), fx_v3(0, -FX_ONE, 0));
     double t;
-    uint8_t part;
+    uint16_t part;
     if (CHECK(cast(&c, &down, &t, &part))) {
         CHECK_NEAR(D2F(t), FX_ONE - 4, 1);
         CHECK(nerr(normal_at(&c, &down, t, part), 0, 1, 0) < 1e-4);
@@ -469,7 +469,7 @@ void case_cone_apex_and_rim(void)
                "reference's by more than 2^-14\n", apex_miss, apex_bad_t);
     rt_ray axis = ray(-0.4, 5, 0.6, 0, -1, 0);
     double t;
-    uint8_t part;
+    uint16_t part;
     if (CHECK(cast(&k, &axis, &t, &part))) {
         CHECK(fabs(t - 2.9) < 1.0 / 8192);
         CHECK(nerr(normal_at(&k, &axis, t, part), 0, 1, 0) < 1e-3);

@@ -401,10 +401,10 @@ rt_ray ray(double ox, double oy, double oz, double dx, double dy,
 }
 
 /* The core's nearest hit with t_min = EPS, t_max unbounded: 1 and *t. */
-int cast(const rt_object *o, const rt_ray *r, double *t, uint8_t *part)
+int cast(const rt_object *o, const rt_ray *r, double *t, uint16_t *part)
 {
     fx_t tf;
-    uint8_t p = 0;
+    uint16_t p = 0;
     int hit = rt_intersect(o, r, RT_EPS, FX_MAX, &tf, &p);
     *t = hit ? F2D(tf) : -1;
     if (part)
@@ -430,7 +430,7 @@ int cast_ref(const rt_object *o, const rt_ray *r, double *t,
 
 /* Outward normal of the core at its own hit. */
 fx_dir3 normal_at(const rt_object *o, const rt_ray *r, double t,
-                         uint8_t part)
+                         uint16_t part)
 {
     fx_vec3 p = fx_v3_madd_d(r->o, r->d, D2F(t));
     return rt_normal(o, r, D2F(t), &p, part, 1);

@@ -425,7 +425,7 @@ void case_coplanar_bottom_on_floor(void)
             double oy = 0.05 + rnd() * 0.4;
             rt_ray r = ray(ox, oy, oz, rnd() - 0.5, -0.3 - rnd(), rnd() - 0.5);
             fx_t tf, ts;
-            uint8_t pf, ps;
+            uint16_t pf, ps;
             if (!rt_intersect(&floor, &r, RT_EPS, FX_MAX, &tf, &pf) ||
                 !rt_intersect(&shapes[k], &r, RT_EPS, FX_MAX, &ts, &ps))
                 continue;

@@ -126,11 +126,11 @@ rt_ray ray_raw(fx_vec3 o, fx_vec3 d);
 fx_dir3 dir16(fx_vec3 d);
 rt_ray ray(double ox, double oy, double oz, double dx, double dy,
                   double dz);
-int cast(const rt_object *o, const rt_ray *r, double *t, uint8_t *part);
+int cast(const rt_object *o, const rt_ray *r, double *t, uint16_t *part);
 int cast_ref(const rt_object *o, const rt_ray *r, double *t,
                     ref_vec3 *n);
 fx_dir3 normal_at(const rt_object *o, const rt_ray *r, double t,
-                         uint8_t part);
+                         uint16_t part);
 double nerr(fx_dir3 n, double x, double y, double z);
 int sweep(const rt_object *ob, fx_vec3 o, fx_vec3 step, fx_vec3 d,
                  int n, int k_sure, double tol);

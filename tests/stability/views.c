@@ -220,7 +220,7 @@ void case_rim_caps_from_outside(void)
                         rt_ray ry = ray(px - 0.5 * r * dx, py - 0.5 * r * dy,
                                         c, dx, dy, 0);
                         double t, tr;
-                        uint8_t part;
+                        uint16_t part;
                         rays++;
                         if (!cast(&o, &ry, &t, &part))
                             continue;
