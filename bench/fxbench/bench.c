@@ -155,7 +155,7 @@ static void shapes(uint32_t bv)
             R[i].small = (uint8_t)fx_v3_small(org);
         }
         fx_t t;
-        uint8_t part;
+        uint16_t part;
         report(names[kind],
                LOOP(rt_intersect(&o, &R[i], 128, FX_MAX, &t, &part) ? t : 0),
                bv);
