@@ -38,9 +38,11 @@ static int newton_step(int64_t g, int64_t den, int32_t *s)
     const int neg = (g < 0) == (den < 0); /* -g / den < 0 */
     uint64_t ug = (uint64_t)(g < 0 ? -g : g);
     uint64_t ud = (uint64_t)(den < 0 ? -den : den);
-    /* |s| <= 2^FINE_S_BITS: |g| <= |den| 2^(FINE_S_BITS - FX_UBITS). */
+    /* |s| <= 2^FINE_S_BITS: |g| <= |den| 2^(FINE_S_BITS - FX_UBITS). (The
+     * & 63 only keeps the shift of the branch not taken non-negative for
+     * static analysis.) */
     if (FX_UBITS >= FINE_S_BITS ? ug > ud >> (FX_UBITS - FINE_S_BITS)
-                                : ug > ud << (FINE_S_BITS - FX_UBITS))
+                                : ug > ud << ((FINE_S_BITS - FX_UBITS) & 63))
         return 0;
     const int k = ud >> 31 ? 33 - fx_clz64(ud) : 0;
     ud >>= k; /* below 2^31; the dividend below ud 2^FINE_S_BITS */
