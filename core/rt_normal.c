@@ -8,8 +8,8 @@
  * radius. A ray that bounces between the walls of a glass cylinder
  * multiplies the tilt at every bounce, so for a cylinder side that casts
  * secondary rays the unrounded o + t d is formed with 30 fraction bits
- * and moved along d by one Newton step onto the side, and the normal and
- * the hit point are taken there (docs/numerics.md).
+ * and moved along d by Newton steps onto the side, and the normal and the
+ * hit point are taken there (docs/numerics.md).
  */
 #include "rt_mesh.h"
 #include "rt_shape.h"
