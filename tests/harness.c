@@ -56,3 +56,10 @@ int th_scene_names(char *names[], int max)
     qsort(names, (size_t)count, sizeof names[0], cmp_names);
     return count;
 }
+
+int th_to_image(void *ctx, int y, const uint8_t *row, size_t n)
+{
+    th_sink *s = ctx;
+    memcpy(s->img + (size_t)y * s->stride, row, n);
+    return 0;
+}

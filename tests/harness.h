@@ -7,6 +7,7 @@
 #ifndef TEST_HARNESS_H
 #define TEST_HARNESS_H
 
+#include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
 
@@ -26,6 +27,13 @@ uint64_t th_rnd64(uint64_t *state);
 /* The names of the files in scenes/ that end in .scene (run from the top),
  * sorted, at most max, each malloc'd; returns how many. */
 int th_scene_names(char *names[], int max);
+
+/* A render's rows into an image (rt_row_fn): row y at img + y stride. */
+typedef struct {
+    uint8_t *img;
+    size_t stride;
+} th_sink;
+int th_to_image(void *ctx, int y, const uint8_t *row, size_t n);
 
 #define CHECK(cond) th_check(!!(cond), __FILE__, __LINE__, #cond)
 

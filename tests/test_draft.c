@@ -25,30 +25,18 @@
 #define MAXW 128
 #define MAXH 96
 
-typedef struct {
-    uint8_t *img;
-    size_t stride;
-} sink;
-
-static int to_image(void *ctx, int y, const uint8_t *row, size_t n)
-{
-    sink *s = ctx;
-    memcpy(s->img + (size_t)y * s->stride, row, n);
-    return 0;
-}
-
 /* Renders o into img in bands of `band` rows; adds to *st. */
 static rt_status render(const rt_scene *s, const rt_options *o, uint8_t *img,
                         int band, rt_stats *st)
 {
     static uint8_t buf[MAXW * 64];
-    sink k = { img, rt_row_bytes(o) };
+    th_sink k = { img, rt_row_bytes(o) };
     rt_status rc = RT_OK;
     if (!CHECK(rt_buffer_bytes(o) <= sizeof buf))
         return RT_ERR_ARG;
     for (int y = 0; y < o->height && rc == RT_OK; y += band) {
         int y1 = y + band > o->height ? o->height : y + band;
-        rc = rt_render_rows(s, o, y, y1, buf, to_image, &k, st);
+        rc = rt_render_rows(s, o, y, y1, buf, th_to_image, &k, st);
     }
     return rc;
 }

@@ -21,18 +21,6 @@
 #define TH 48
 #define CHECKSUMS "tests/render_checksums.txt"
 
-typedef struct {
-    uint8_t *img;
-    size_t stride;
-} sink;
-
-static int to_image(void *ctx, int y, const uint8_t *row, size_t n)
-{
-    sink *s = ctx;
-    memcpy(s->img + (size_t)y * s->stride, row, n);
-    return 0;
-}
-
 static uint64_t fnv1a(const uint8_t *p, size_t n)
 {
     uint64_t h = 1469598103934665603ull;
@@ -45,11 +33,11 @@ static rt_status render(const rt_scene *s, rt_options *o, uint8_t *img,
                         int band)
 {
     uint8_t row[TW * 3];
-    sink k = { img, rt_row_bytes(o) };
+    th_sink k = { img, rt_row_bytes(o) };
     rt_status st = RT_OK;
     for (int y = 0; y < o->height && st == RT_OK; y += band) {
         int y1 = y + band > o->height ? o->height : y + band;
-        st = rt_render_rows(s, o, y, y1, row, to_image, &k, NULL);
+        st = rt_render_rows(s, o, y, y1, row, th_to_image, &k, NULL);
     }
     return st;
 }
