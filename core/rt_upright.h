@@ -326,6 +326,20 @@ RT_COLD static int upright_thin(const rt_object *o, const rt_ray *r,
     int side = thin_side(o, r, tca, &f, s0, tmin, &best);
     if (side < 0)
         return found;
+    if (side > 0) {
+        /* Once more about that root, which is nearer the apex or the
+         * needle than s0, so the frame there is finer still: a ray
+         * within rounding of tangent there (a shadow ray to a light on
+         * the apex along a generator) had its roots split by the first
+         * fine frame's rounding, up to a few EPS apart. */
+        fx_t again = tmax;
+        const int64_t s1 = shift_round((int64_t)best - tca, -f.sf);
+        const int side1 = thin_side(o, r, tca, &f, s1, tmin, &again);
+        if (side1 >= 0) {
+            side = side1;
+            best = again;
+        }
+    }
     const int32_t ur = (int32_t)shift_round(o->r, -f.sf);
     found = upright_caps(o, r, tca, &f, ur, tmin, &best, &pt) | side;
     if (found) {
