@@ -1,28 +1,41 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Runs every test part and adds up their "N passed, N failed[, N skipped]"
-# lines (TEST_SUITES picks suites; see below). Parts: each unit-test binary build/<host>/tests/test_*, then each
-# tests/suite_*.sh script. A part that exits non-zero or prints no summary
-# counts as one failure. A part that needs a missing tool prints
-# "SKIPPED: <why>" and counts a skip; under CI (CI=true) a skip is a failure,
-# because CI installs every tool.
+# lines (TEST_SUITES picks suites; see below). Parts: each unit-test binary
+# build/<host>/tests/test_*, then each tests/suite_*.sh script. A part that
+# exits non-zero or prints no summary counts as one failure. A part that
+# needs a missing tool prints "SKIPPED: <why>" and counts a skip; under CI
+# (CI=true) a skip is a failure, because CI installs every tool.
+#
+# TEST_JOBS parts (default: the machine's processors) run at once, each
+# with its own log; the parts that took longest last time start first, and
+# the report lists every part in its fixed order once all have ended. Parts
+# that build share nothing but the host build, which test-build has made
+# already; the firmware suites lock each board's build directory.
 set -u
 cd "$(dirname "$0")/.."
 HOST_BUILD=${HOST_BUILD:-build/posix}
 export HOST_BUILD
 export FIXTRACE="$HOST_BUILD/fixtrace"
+JOBS=${TEST_JOBS:-$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)}
 pass=0 fail=0 skip=0
 skipped_parts=""
 log_dir="$HOST_BUILD/test-logs"
 mkdir -p "$log_dir"
 
+# Runs one part into its log; its exit status and seconds go to NAME.rc.
 run_part() {
     local name=$1; shift
-    local log="$log_dir/$name.log"
     local start=$SECONDS
-    "$@" >"$log" 2>&1
-    local rc=$?
-    local line
+    "$@" >"$log_dir/$name.log" 2>&1
+    echo "$? $((SECONDS - start))" >"$log_dir/$name.rc"
+}
+
+# Adds up one part that has ended, and prints its line.
+report_part() {
+    local name=$1
+    local log="$log_dir/$name.log" rc=1 secs=0 line
+    [ -f "$log_dir/$name.rc" ] && read -r rc secs <"$log_dir/$name.rc"
     line=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$log" | tail -n 1)
     local p=0 f=0 s=0
     if [ -n "$line" ]; then
@@ -31,7 +44,7 @@ run_part() {
         s=$(echo "$line" | sed -nE 's/.*, ([0-9]+) skipped.*/\1/p')
         s=${s:-0}
     fi
-    if [ -z "$line" ] || { [ $rc -ne 0 ] && [ "$f" -eq 0 ]; }; then
+    if [ -z "$line" ] || { [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; }; then
         f=$((f + 1))
         echo "  $name: exit status $rc$( [ -z "$line" ] && echo ', no summary line')"
     fi
@@ -45,16 +58,18 @@ run_part() {
     fi
     pass=$((pass + p)); fail=$((fail + f)); skip=$((skip + s))
     printf '%-28s %6d passed %4d failed %3d skipped  (%ds)\n' \
-        "$name" "$p" "$f" "$s" $((SECONDS - start))
+        "$name" "$p" "$f" "$s" "$secs"
     if [ "$f" -gt 0 ]; then
         grep -E 'FAILED|error|Error' "$log" | head -n 20 | sed 's/^/    /'
         echo "    (full log: $log)"
     fi
 }
 
+# The parts, in report order: "name command...", one a line.
+parts=()
 for bin in "$HOST_BUILD"/tests/test_*; do
     [ -x "$bin" ] || continue
-    run_part "$(basename "$bin")" "$bin"
+    parts+=("$(basename "$bin") $bin")
 done
 # TEST_SUITES="cli png" runs only those suites (after every unit binary),
 # for make test-quick.
@@ -66,9 +81,33 @@ for suite in tests/suite_*.sh; do
         *) continue ;;
         esac
     fi
-    run_part "$(basename "$suite" .sh)" bash "$suite"
+    parts+=("$(basename "$suite" .sh) bash $suite")
 done
 
+# Start order: longest last time first (NAME.rc keeps the seconds).
+order=$(for i in "${!parts[@]}"; do
+    name=${parts[$i]%% *} secs=0
+    [ -f "$log_dir/$name.rc" ] && read -r _ secs <"$log_dir/$name.rc"
+    echo "$secs $i"
+done | sort -k1,1nr -k2,2n | cut -d' ' -f2)
+for i in "${!parts[@]}"; do
+    rm -f "$log_dir/${parts[$i]%% *}.rc"
+done
+running=0
+for i in $order; do
+    if [ "$running" -ge "$JOBS" ]; then
+        wait -n
+        running=$((running - 1))
+    fi
+    # shellcheck disable=SC2086
+    run_part ${parts[$i]} &
+    running=$((running + 1))
+done
+wait
+
+for part in "${parts[@]}"; do
+    report_part "${part%% *}"
+done
 if [ -n "$skipped_parts" ]; then
     echo "Skipped parts (install the tool to run them):$skipped_parts"
 fi
