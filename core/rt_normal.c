@@ -6,10 +6,10 @@
  * either error, up to 2^-17 of a unit across the surface (more where the
  * ray grazes it), tilts a curved surface's normal by that over its
  * radius. A ray that bounces between the walls of a glass cylinder
- * multiplies the tilt at every bounce, so for a cylinder side that casts
- * secondary rays the unrounded o + t d is formed with 30 fraction bits
- * and moved along d by Newton steps onto the side, and the normal and the
- * hit point are taken there (docs/numerics.md).
+ * multiplies the tilt at every bounce, so for a cylinder or cone side
+ * that casts secondary rays the unrounded o + t d is formed with 30
+ * fraction bits and moved along d by Newton steps onto the side, and the
+ * normal and the hit point are taken there (docs/numerics.md).
  */
 #include "rt_mesh.h"
 #include "rt_shape.h"
@@ -112,6 +112,109 @@ static int side_step(const rt_ray *r, fx_t t, fx_vec3 p, fx_vec3 a,
     return 1;
 }
 
+/* n / h as a quotient (returned) and 2^-FINE_K_BITS of a unit of it in
+ * *lo (|lo| < 2^FINE_K_BITS): n / h = q + lo 2^-FINE_K_BITS, to within
+ * that. h > 0; |n| < 2^62. */
+#define FINE_K_BITS 24
+static int64_t div_frac(int64_t n, int32_t h, int64_t *lo)
+{
+    const int64_t q = n / h;
+    *lo = (n - q * h) * ((int64_t)1 << FINE_K_BITS) / h;
+    return q;
+}
+
+/* The same for the side of a cone (axis through a, apex at height ya =
+ * a.y + h, radius r at the base): Newton steps along d on g = |u|^2 -
+ * (k W)^2, with u = p + q - a across the axis, W = ya - y the height below
+ * the apex and k = r / h. k W is formed from the exact r and h, not the
+ * rounded slope o->k, whose 2^-24 is itself an ulp of a tall cone's
+ * hit; each quotient carries FINE_K_BITS more fraction bits (its part
+ * "lo"), so every product stays within 64 bits. Also sets n to the
+ * normal (u, k^2 W) there, unnormalised, with 30 fraction bits. Returns 0,
+ * and the caller takes p, as side_step does, or where a flat cone's
+ * k^2 w leaves 2^32. */
+static int cone_step(const rt_ray *r, fx_t t, fx_vec3 p, const rt_object *o,
+                     int32_t q[3], int64_t n[3])
+{
+    const int32_t pc[3] = { p.x, p.y, p.z }, ac[3] = { o->a.x, 0, o->a.z };
+    const int32_t oc[3] = { r->o.x, r->o.y, r->o.z };
+    const int32_t dc[3] = { r->d.x, r->d.y, r->d.z };
+    const int64_t w = (int64_t)o->a.y + o->h - p.y; /* Q16.16, exact */
+    if (w <= 0 || w >= FINE_V_MAX || o->h <= 0)
+        return 0; /* the apex, or past it */
+    /* k w = R + e 2^-24, Q16.16 (r w < 2^61). */
+    int64_t e;
+    const int64_t rr = div_frac((int64_t)o->r * w, o->h, &e);
+    /* k^2 w, Q16.16, and its part below (|r R| < 2^62: R is about |u|). */
+    if (rr >= FINE_V_MAX * (int64_t)2)
+        return 0;
+    int64_t kkw_lo;
+    const int64_t kkw = div_frac((int64_t)o->r * rr, o->h, &kkw_lo);
+    if (kkw >= ((int64_t)1 << 32) || kkw <= -((int64_t)1 << 32))
+        return 0;
+    int32_t v[3] = { 0, 0, 0 };
+    int64_t g0 = -rr * rr, vd = kkw * dc[1];
+    for (int i = 0; i < 3; i++) {
+        const int64_t ei =
+            shr_round(fx_imul64(t, dc[i]) - ((int64_t)pc[i] - oc[i]) *
+                                                 ((int64_t)1 << FX_UBITS),
+                      FX_UBITS - 14);
+        if (ei >= FINE_E_MAX || ei <= -FINE_E_MAX)
+            return 0;
+        q[i] = (int32_t)ei;
+        if (i == 1)
+            continue;
+        const int64_t vi = (int64_t)pc[i] - ac[i];
+        if (vi >= FINE_V_MAX || vi <= -FINE_V_MAX)
+            return 0;
+        v[i] = (int32_t)vi;
+        g0 += fx_imul64(v[i], v[i]);
+        vd += fx_imul64(v[i], dc[i]);
+    }
+    if (g0 >= FINE_G_MAX || g0 <= -FINE_G_MAX)
+        return 0;
+    /* (k w)^2 = R^2 + 2 R e 2^-24 + e^2 2^-48: the last is below 2^-50. */
+    const int64_t g1 = g0 * ((int64_t)1 << 14) -
+                       shr_round(2 * rr * e, FINE_K_BITS - 14);
+    int64_t kq = 0, kq_lo = 0;
+    for (int step = 0; step < 4; step++) {
+        /* k qy = kq + kq_lo 2^-24, 30 fraction bits (r qy < 2^53). */
+        kq = div_frac((int64_t)o->r * q[1], o->h, &kq_lo);
+        /* g at p + q with 46 fraction bits: (k W)^2 = (k w)^2 -
+         * 2 (k w) (k qy) + (k qy)^2. */
+        int64_t g = g1 + 2 * rr * kq +
+                    shr_round(2 * (rr * kq_lo + e * kq), FINE_K_BITS) -
+                    (fx_imul64((int32_t)kq, (int32_t)kq) >> 14);
+        /* g' / 2 along d: u.d + k^2 W dy, 16 + FX_UBITS (k^2 qy from
+         * 30 fraction bits to 16 first). */
+        int64_t den = vd - shr_round(div_frac((int64_t)o->r * kq, o->h,
+                                              &kq_lo), 14) * dc[1];
+        for (int i = 0; i < 3; i += 2) {
+            g += 2 * fx_imul64(v[i], q[i]) + (fx_imul64(q[i], q[i]) >> 14);
+            den += fx_imul64(q[i], dc[i]) >> 14;
+        }
+        int32_t s;
+        if (!newton_step(g, 2 * den, &s))
+            return 0;
+        for (int i = 0; i < 3; i++) {
+            q[i] += (int32_t)shr_round(fx_imul64(s, dc[i]), FX_UBITS);
+            if (q[i] >= FINE_Q_MAX || q[i] <= -FINE_Q_MAX)
+                return 0;
+        }
+        if (s <= (1 << 12) && s >= -(1 << 12))
+            break;
+    }
+    /* k^2 W with 30 fraction bits: k^2 w - k (k qy). */
+    kq = div_frac((int64_t)o->r * q[1], o->h, &kq_lo);
+    int64_t lo;
+    n[0] = (int64_t)v[0] * (1 << 14) + q[0];
+    n[1] = kkw * (1 << 14) + shr_round(kkw_lo, FINE_K_BITS - 14) +
+           shr_round(div_frac((int64_t)o->r * e, o->h, &lo), 10) -
+           div_frac((int64_t)o->r * kq, o->h, &lo);
+    n[2] = (int64_t)v[2] * (1 << 14) + q[2];
+    return 1;
+}
+
 /* p moved by q (30 fraction bits), rounded to Q16.16. */
 static fx_vec3 moved(fx_vec3 p, const int32_t q[3])
 {
@@ -159,6 +262,11 @@ fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *pp,
             return fx_d3(0, FX_UONE, 0);
         fx_t x = fx_sub(p.x, o->a.x), z = fx_sub(p.z, o->a.z);
         if (o->kind == RT_CONE) {
+            int64_t nc[3];
+            if (precise && cone_step(r, t, p, o, q, nc)) {
+                *pp = moved(p, q);
+                return fx_d3_normalize64(nc[0], nc[1], nc[2]);
+            }
             fx_t rho = (fx_t)fx_sqrt_q32((uint64_t)(fx_imul64(x, x)) +
                                          (uint64_t)(fx_imul64(z, z)));
             if (rho == 0)

@@ -307,6 +307,94 @@ static void random_cylinder_normals(void)
            n, worst, worst_graze, worst_plain, worst_p * 65536);
 }
 
+/* Random rays at random cones (radius 0.05 to 8, radius / height 0.1 to
+ * 16), from outside and inside, towards a point on the side between a
+ * tenth and nine tenths of the way down from the apex: a side hit's
+ * normal (precise) times the cone's radius rho there within 2^-22 where
+ * the cosine of incidence is 0.05 or more (2^-19 down to 0.01), and the
+ * hit point within 0.5 Q16.16 ulps (plus 2^-22) of the ray's true hit.
+ * The normal from the rounded point is printed for comparison. */
+static void random_cone_normals(void)
+{
+    uint32_t x = 4242;
+    double worst = 0, worst_graze = 0, worst_p = 0, worst_plain = 0;
+    int n = 0, unprepared = 0;
+    for (int i = 0; i < 200000; i++) {
+        double r = 0.05 + 8.0 * (unif(&x) + 1) / 2;
+        double slope = exp(log(0.1) + (log(16) - log(0.1)) *
+                                          (unif(&x) + 1) / 2);
+        rt_object c = make(RT_CONE, 3 * unif(&x), -2, 3 * unif(&x), r,
+                           r / slope);
+        if (rt_object_prepare(&c) != RT_OK) {
+            unprepared++;
+            continue;
+        }
+        double ax = F2D(c.a.x), az = F2D(c.a.z), rr = F2D(c.r);
+        double ya = F2D(c.a.y) + F2D(c.h), k = rr / F2D(c.h);
+        double f = 0.5 + 0.4 * unif(&x), ang = 3.14159265 * unif(&x);
+        double tx = ax + rr * f * cos(ang), tz = az + rr * f * sin(ang);
+        double ty = ya - F2D(c.h) * f;
+        double ox = i & 1 ? ax + 0.3 * rr * f * unif(&x) : tx + 20 * unif(&x);
+        double oz = i & 1 ? az + 0.3 * rr * f * unif(&x) : tz + 20 * unif(&x);
+        double oy = i & 1 ? ty - 0.1 * F2D(c.h) * (unif(&x) + 1.5)
+                          : ty + 20 * unif(&x);
+        rt_ray ry = ray(ox, oy, oz, tx - ox, ty - oy, tz - oz);
+        fx_t t;
+        uint16_t part;
+        if (!rt_intersect(&c, &ry, RT_EPS, FX_MAX, &t, &part) || part != 0)
+            continue;
+        /* The fixed-point ray exactly, in double: its side root (below
+         * the apex) nearest the core's t. */
+        double rox = F2D(ry.o.x) - ax, roy = F2D(ry.o.y) - ya;
+        double roz = F2D(ry.o.z) - az;
+        double dx = U2D(ry.d.x), dy = U2D(ry.d.y), dz = U2D(ry.d.z);
+        double qa = dx * dx + dz * dz - k * k * dy * dy;
+        double qb = rox * dx + roz * dz - k * k * roy * dy;
+        double qc = rox * rox + roz * roz - k * k * roy * roy;
+        double disc = qb * qb - qa * qc;
+        if (disc < 0 || qa == 0)
+            continue;
+        double t0 = (-qb - sqrt(disc)) / qa, t1 = (-qb + sqrt(disc)) / qa;
+        double te = fabs(t0 - F2D(t)) < fabs(t1 - F2D(t)) ? t0 : t1;
+        double hx = rox + te * dx, hy = roy + te * dy, hz = roz + te * dz;
+        double rho = sqrt(hx * hx + hz * hz);
+        if (hy >= 0 || rho < 1e-3)
+            continue;
+        double nl = sqrt(hx * hx + hz * hz + k * k * rho * rho);
+        double nx = hx / nl, ny = k * rho / nl, nz = hz / nl;
+        double cosi = fabs(nx * dx + ny * dy + nz * dz);
+        if (cosi < 0.01)
+            continue; /* within 0.01 of tangent */
+        fx_vec3 p = fx_v3_madd_d(ry.o, ry.d, t);
+        fx_dir3 plain = rt_normal(&c, &ry, t, &p, part, 0);
+        fx_dir3 nrm = rt_normal(&c, &ry, t, &p, part, 1);
+        double e = fmax(fabs(U2D(nrm.x) - nx),
+                        fmax(fabs(U2D(nrm.y) - ny), fabs(U2D(nrm.z) - nz)));
+        double ep = fmax(fabs(U2D(plain.x) - nx),
+                         fmax(fabs(U2D(plain.y) - ny),
+                              fabs(U2D(plain.z) - nz)));
+        double dp = fmax(fabs(F2D(p.y) - ya - hy),
+                         fmax(fabs(F2D(p.x) - ax - hx),
+                              fabs(F2D(p.z) - az - hz)));
+        if (cosi >= 0.05)
+            worst = fmax(worst, e * rho);
+        else
+            worst_graze = fmax(worst_graze, e * rho);
+        worst_plain = fmax(worst_plain, ep * rho);
+        worst_p = fmax(worst_p, dp);
+        n++;
+    }
+    CHECK_EQ(unprepared, 0);
+    CHECK(n > 100000);
+    CHECK(worst < 1.0 / (1 << 22));
+    CHECK(worst_graze < 1.0 / (1 << 19));
+    CHECK(worst_p < 0.5 / 65536 + 1.0 / (1 << 22));
+    printf("random cone side hits: %d, normal within %.3g / rho (%.3g / "
+           "rho where the cosine is below 0.05; from the rounded hit point: "
+           "%.3g), hit point within %.3f ulps\n",
+           n, worst, worst_graze, worst_plain, worst_p * 65536);
+}
+
 /* Flat quads (rt_object.flat, n along y) take a short path in the
  * quad test: it must give what the general path gives, bit for bit, for
  * both edge orders, both normal signs, and rays from anywhere. */
@@ -391,5 +479,6 @@ int main(void)
     cone_cases();
     random_spheres();
     random_cylinder_normals();
+    random_cone_normals();
     return th_summary();
 }
