@@ -169,6 +169,34 @@ void case_apex_light_along_generator(void)
                blocked, rays);
 }
 
+/* A strongly bumped mirror on the underside of a flat open cone (radius
+ * 701, height 13.3, 30,000 units from the origin), seen from below near
+ * its apex (random scene 3596): the reflection grazes the cone's inside
+ * for 400 units, and the rounded hit point, 16 ulps off along the camera
+ * ray, sent one pixel's bounce elsewhere (core 26 18 28, reference 64 94
+ * 36). Cone sides that cast secondary rays now take their hit point and
+ * normal from Newton steps onto the side (rt_normal.c): no speckles, and
+ * at least 40 dB against the reference. */
+void case_bumped_mirror_under_flat_cone(void)
+{
+    static const char text[] =
+        "image 56 32 depth 3\n"
+        "background 0.54868154 0.99075107 0.18207609\n"
+        "material m0 color 0.94101507 0.66440395 0.99259111 "
+        "ambient 0.12083909 diffuse 0.56774596 specular 0.24542273 "
+        "shininess 33 reflect 0.56165015 bump 3.61257648 1.29555655\n"
+        "cone base -29630.74044535 -17.64696939 -40.56345941 "
+        "radius 701.38131489 height 13.32326846 open material m0\n"
+        "camera eye -29677.17545861 -22.29854245 -54.97787120 "
+        "look 29659.98766598 0.00000000 0.00000000 fov 30.11866780\n"
+        "light -29667.72127213 36.00184370 -139.08609187 "
+        "color 1.49820590 1.53411230 2.09929025\n"
+        "light -29687.34050277 2.22580739 -38.66027958\n";
+    if (!parse(text, &scene_a))
+        return;
+    expect_clean(&scene_a, (view){ 0, 0, 0, -1, 0 }, 40, "scene 3596");
+}
+
 /* Objects on a floor: a box, a capped cylinder, a cone, a sphere and a
  * tilted quad, with the light given. */
 static const char on_surface_fmt[] =

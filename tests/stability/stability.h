@@ -209,6 +209,7 @@ double rnd(void);
     X(glass_ior_100_outer_ring) \
     X(light_at_cone_apex) \
     X(apex_light_along_generator) \
+    X(bumped_mirror_under_flat_cone) \
     X(lights_on_surfaces) \
     X(far_tilted_quads) \
     X(bumped_glass_and_mirror) \
