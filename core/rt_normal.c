@@ -52,6 +52,67 @@ static int newton_step(int64_t g, int64_t den, int32_t *s)
     return 1;
 }
 
+/* What side_step and cone_step start from: q = o + t d - p with 30
+ * fraction bits, and v = p - a across the axis (x and z, Q16.16, exact),
+ * with |v|^2 added to *g0 (Q32.32) and v.d to *vd (16 + FX_UBITS).
+ * Returns 0 where a value leaves its range. */
+static int fine_start(const rt_ray *r, fx_t t, fx_vec3 p, fx_vec3 a,
+                      int32_t q[3], int32_t v[3], int64_t *g0, int64_t *vd)
+{
+    const int32_t pc[3] = { p.x, p.y, p.z }, ac[3] = { a.x, a.y, a.z };
+    const int32_t oc[3] = { r->o.x, r->o.y, r->o.z };
+    const int32_t dc[3] = { r->d.x, r->d.y, r->d.z };
+    v[1] = 0;
+    for (int i = 0; i < 3; i++) {
+        /* t d has 16 + FX_UBITS fraction bits. */
+        const int64_t e =
+            shr_round(fx_imul64(t, dc[i]) - ((int64_t)pc[i] - oc[i]) *
+                                                 ((int64_t)1 << FX_UBITS),
+                      FX_UBITS - 14);
+        if (e >= FINE_E_MAX || e <= -FINE_E_MAX)
+            return 0;
+        q[i] = (int32_t)e;
+        if (i == 1)
+            continue;
+        const int64_t vi = (int64_t)pc[i] - ac[i];
+        if (vi >= FINE_V_MAX || vi <= -FINE_V_MAX)
+            return 0;
+        v[i] = (int32_t)vi;
+        *g0 += fx_imul64(v[i], v[i]);
+        *vd += fx_imul64(v[i], dc[i]);
+    }
+    return *g0 < FINE_G_MAX && *g0 > -FINE_G_MAX;
+}
+
+/* The part across the axis of g = |v + q|^2 - ... (46 fraction bits) and
+ * of den = (v + q).d (16 + FX_UBITS), added to *g and *den. */
+static void fine_across(const rt_ray *r, const int32_t v[3],
+                        const int32_t q[3], int64_t *g, int64_t *den)
+{
+    const int32_t dc[3] = { r->d.x, r->d.y, r->d.z };
+    for (int i = 0; i < 3; i += 2) {
+        *g += 2 * fx_imul64(v[i], q[i]) + (fx_imul64(q[i], q[i]) >> 14);
+        *den += fx_imul64(q[i], dc[i]) >> 14;
+    }
+}
+
+/* One Newton step -g / (2 den) along d, added to q: 1 while another is
+ * due (the step was longer than a quarter of a Q16.16 ulp), 0 when done,
+ * -1 where the step or the move leaves its range. */
+static int fine_move(const rt_ray *r, int64_t g, int64_t den, int32_t q[3])
+{
+    const int32_t dc[3] = { r->d.x, r->d.y, r->d.z };
+    int32_t s;
+    if (!newton_step(g, 2 * den, &s))
+        return -1;
+    for (int i = 0; i < 3; i++) {
+        q[i] += (int32_t)shr_round(fx_imul64(s, dc[i]), FX_UBITS);
+        if (q[i] >= FINE_Q_MAX || q[i] <= -FINE_Q_MAX)
+            return -1;
+    }
+    return s > (1 << 12) || s < -(1 << 12);
+}
+
 /* Where ray r meets the side of a cylinder (axis through a, along y,
  * radius rad) near its rounded hit p = o + t d: Newton steps along d from
  * the unrounded o + t d onto the side. A step moves the point by its
@@ -65,49 +126,17 @@ static int newton_step(int64_t g, int64_t den, int32_t *s)
 static int side_step(const rt_ray *r, fx_t t, fx_vec3 p, fx_vec3 a,
                      fx_t rad, int32_t q[3])
 {
-    const int32_t pc[3] = { p.x, p.y, p.z }, ac[3] = { a.x, a.y, a.z };
-    const int32_t oc[3] = { r->o.x, r->o.y, r->o.z };
-    const int32_t dc[3] = { r->d.x, r->d.y, r->d.z };
-    int32_t v[3] = { 0, 0, 0 };
+    int32_t v[3];
     int64_t g0 = -fx_imul64(rad, rad), vd = 0;
-    for (int i = 0; i < 3; i++) {
-        /* q = o + t d - p, 30 fraction bits: t d has 16 + FX_UBITS. */
-        const int64_t e =
-            shr_round(fx_imul64(t, dc[i]) - ((int64_t)pc[i] - oc[i]) *
-                                                 ((int64_t)1 << FX_UBITS),
-                      FX_UBITS - 14);
-        if (e >= FINE_E_MAX || e <= -FINE_E_MAX)
-            return 0;
-        q[i] = (int32_t)e;
-        if (i == 1)
-            continue; /* v = p - a across the axis: x and z */
-        const int64_t vi = (int64_t)pc[i] - ac[i]; /* Q16.16, exact */
-        if (vi >= FINE_V_MAX || vi <= -FINE_V_MAX)
-            return 0;
-        v[i] = (int32_t)vi;
-        g0 += fx_imul64(v[i], v[i]);
-        vd += fx_imul64(v[i], dc[i]);
-    }
-    if (g0 >= FINE_G_MAX || g0 <= -FINE_G_MAX)
+    if (!fine_start(r, t, p, a, q, v, &g0, &vd))
         return 0;
-    for (int step = 0; step < 4; step++) {
-        /* At p + q: g = |v + q|^2 - r^2 with 46 fraction bits, and
-         * den = 2 (v + q).d with 16 + FX_UBITS. */
+    for (int step = 0, more = 1; more && step < 4; step++) {
+        /* At p + q: g = |v + q|^2 - r^2, den = (v + q).d. */
         int64_t g = g0 * ((int64_t)1 << 14), den = vd;
-        for (int i = 0; i < 3; i += 2) {
-            g += 2 * fx_imul64(v[i], q[i]) + (fx_imul64(q[i], q[i]) >> 14);
-            den += fx_imul64(q[i], dc[i]) >> 14;
-        }
-        int32_t s;
-        if (!newton_step(g, 2 * den, &s))
+        fine_across(r, v, q, &g, &den);
+        more = fine_move(r, g, den, q);
+        if (more < 0)
             return 0;
-        for (int i = 0; i < 3; i++) {
-            q[i] += (int32_t)shr_round(fx_imul64(s, dc[i]), FX_UBITS);
-            if (q[i] >= FINE_Q_MAX || q[i] <= -FINE_Q_MAX)
-                return 0;
-        }
-        if (s <= (1 << 12) && s >= -(1 << 12))
-            break;
     }
     return 1;
 }
@@ -136,9 +165,6 @@ static int64_t div_frac(int64_t n, int32_t h, int64_t *lo)
 static int cone_step(const rt_ray *r, fx_t t, fx_vec3 p, const rt_object *o,
                      int32_t q[3], int64_t n[3])
 {
-    const int32_t pc[3] = { p.x, p.y, p.z }, ac[3] = { o->a.x, 0, o->a.z };
-    const int32_t oc[3] = { r->o.x, r->o.y, r->o.z };
-    const int32_t dc[3] = { r->d.x, r->d.y, r->d.z };
     const int64_t w = (int64_t)o->a.y + o->h - p.y; /* Q16.16, exact */
     if (w <= 0 || w >= FINE_V_MAX || o->h <= 0)
         return 0; /* the apex, or past it */
@@ -152,32 +178,15 @@ static int cone_step(const rt_ray *r, fx_t t, fx_vec3 p, const rt_object *o,
     const int64_t kkw = div_frac((int64_t)o->r * rr, o->h, &kkw_lo);
     if (kkw >= ((int64_t)1 << 32) || kkw <= -((int64_t)1 << 32))
         return 0;
-    int32_t v[3] = { 0, 0, 0 };
-    int64_t g0 = -rr * rr, vd = kkw * dc[1];
-    for (int i = 0; i < 3; i++) {
-        const int64_t ei =
-            shr_round(fx_imul64(t, dc[i]) - ((int64_t)pc[i] - oc[i]) *
-                                                 ((int64_t)1 << FX_UBITS),
-                      FX_UBITS - 14);
-        if (ei >= FINE_E_MAX || ei <= -FINE_E_MAX)
-            return 0;
-        q[i] = (int32_t)ei;
-        if (i == 1)
-            continue;
-        const int64_t vi = (int64_t)pc[i] - ac[i];
-        if (vi >= FINE_V_MAX || vi <= -FINE_V_MAX)
-            return 0;
-        v[i] = (int32_t)vi;
-        g0 += fx_imul64(v[i], v[i]);
-        vd += fx_imul64(v[i], dc[i]);
-    }
-    if (g0 >= FINE_G_MAX || g0 <= -FINE_G_MAX)
+    int32_t v[3];
+    int64_t g0 = -rr * rr, vd = kkw * r->d.y;
+    if (!fine_start(r, t, p, o->a, q, v, &g0, &vd))
         return 0;
     /* (k w)^2 = R^2 + 2 R e 2^-24 + e^2 2^-48: the last is below 2^-50. */
     const int64_t g1 = g0 * ((int64_t)1 << 14) -
                        shr_round(2 * rr * e, FINE_K_BITS - 14);
-    int64_t kq = 0, kq_lo = 0;
-    for (int step = 0; step < 4; step++) {
+    int64_t kq, kq_lo;
+    for (int step = 0, more = 1; more && step < 4; step++) {
         /* k qy = kq + kq_lo 2^-24, 30 fraction bits (r qy < 2^53). */
         kq = div_frac((int64_t)o->r * q[1], o->h, &kq_lo);
         /* g at p + q with 46 fraction bits: (k W)^2 = (k w)^2 -
@@ -185,24 +194,14 @@ static int cone_step(const rt_ray *r, fx_t t, fx_vec3 p, const rt_object *o,
         int64_t g = g1 + 2 * rr * kq +
                     shr_round(2 * (rr * kq_lo + e * kq), FINE_K_BITS) -
                     (fx_imul64((int32_t)kq, (int32_t)kq) >> 14);
-        /* g' / 2 along d: u.d + k^2 W dy, 16 + FX_UBITS (k^2 qy from
-         * 30 fraction bits to 16 first). */
+        /* den = u.d + k^2 W dy (k^2 qy from 30 fraction bits to 16
+         * first). */
         int64_t den = vd - shr_round(div_frac((int64_t)o->r * kq, o->h,
-                                              &kq_lo), 14) * dc[1];
-        for (int i = 0; i < 3; i += 2) {
-            g += 2 * fx_imul64(v[i], q[i]) + (fx_imul64(q[i], q[i]) >> 14);
-            den += fx_imul64(q[i], dc[i]) >> 14;
-        }
-        int32_t s;
-        if (!newton_step(g, 2 * den, &s))
+                                              &kq_lo), 14) * r->d.y;
+        fine_across(r, v, q, &g, &den);
+        more = fine_move(r, g, den, q);
+        if (more < 0)
             return 0;
-        for (int i = 0; i < 3; i++) {
-            q[i] += (int32_t)shr_round(fx_imul64(s, dc[i]), FX_UBITS);
-            if (q[i] >= FINE_Q_MAX || q[i] <= -FINE_Q_MAX)
-                return 0;
-        }
-        if (s <= (1 << 12) && s >= -(1 << 12))
-            break;
     }
     /* k^2 W with 30 fraction bits: k^2 w - k (k qy). */
     kq = div_frac((int64_t)o->r * q[1], o->h, &kq_lo);
