@@ -156,7 +156,10 @@ static double feature_of(double scale, int bump)
         return (bump ? 64 + below(192) : 1 + below(2)) / 65536.0;
     double v = r == 1 ? scale * uniform(5, 50)
                       : scale * log_uniform(0.02, 0.7) * 1.0137;
-    v = v < 1 / 65536.0 ? 1 / 65536.0 : v;
+    /* Bump lattices finer than 64 ulps are a documented limit
+     * (docs/stability-cases.md), also in a scene a few hundred ulps wide. */
+    const double least = (bump ? 64 : 1) / 65536.0;
+    v = v < least ? least : v;
     return v > 30000 ? 30000 : v;
 }
 
