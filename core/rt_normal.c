@@ -56,8 +56,10 @@ static int newton_step(int64_t g, int64_t den, int32_t *s)
  * fraction bits, and v = p - a across the axis (x and z, Q16.16, exact),
  * with |v|^2 added to *g0 (Q32.32) and v.d to *vd (16 + FX_UBITS).
  * Returns 0 where a value leaves its range. */
-static int fine_start(const rt_ray *r, fx_t t, fx_vec3 p, fx_vec3 a,
-                      int32_t q[3], int32_t v[3], int64_t *g0, int64_t *vd)
+RT_ALWAYS_INLINE static inline int fine_start(const rt_ray *r, fx_t t,
+                                              fx_vec3 p, fx_vec3 a,
+                                              int32_t q[3], int32_t v[3],
+                                              int64_t *g0, int64_t *vd)
 {
     const int32_t pc[3] = { p.x, p.y, p.z }, ac[3] = { a.x, a.y, a.z };
     const int32_t oc[3] = { r->o.x, r->o.y, r->o.z };
@@ -86,8 +88,10 @@ static int fine_start(const rt_ray *r, fx_t t, fx_vec3 p, fx_vec3 a,
 
 /* The part across the axis of g = |v + q|^2 - ... (46 fraction bits) and
  * of den = (v + q).d (16 + FX_UBITS), added to *g and *den. */
-static void fine_across(const rt_ray *r, const int32_t v[3],
-                        const int32_t q[3], int64_t *g, int64_t *den)
+RT_ALWAYS_INLINE static inline void fine_across(const rt_ray *r,
+                                                const int32_t v[3],
+                                                const int32_t q[3],
+                                                int64_t *g, int64_t *den)
 {
     const int32_t dc[3] = { r->d.x, r->d.y, r->d.z };
     for (int i = 0; i < 3; i += 2) {
@@ -99,7 +103,8 @@ static void fine_across(const rt_ray *r, const int32_t v[3],
 /* One Newton step -g / (2 den) along d, added to q: 1 while another is
  * due (the step was longer than a quarter of a Q16.16 ulp), 0 when done,
  * -1 where the step or the move leaves its range. */
-static int fine_move(const rt_ray *r, int64_t g, int64_t den, int32_t q[3])
+RT_ALWAYS_INLINE static inline int fine_move(const rt_ray *r, int64_t g,
+                                             int64_t den, int32_t q[3])
 {
     const int32_t dc[3] = { r->d.x, r->d.y, r->d.z };
     int32_t s;
@@ -222,11 +227,34 @@ static fx_vec3 moved(fx_vec3 p, const int32_t q[3])
                  p.z + (fx_t)shr_round(q[2], 14));
 }
 
+/* A cylinder's or cone's side normal at the ray's own hit (side_step,
+ * cone_step), with *pp moved there; the zero vector where the steps
+ * decline. Out of line, so that rt_normal's frame, paid by every hit,
+ * does not grow by theirs. */
+RT_NOINLINE static fx_dir3 fine_normal(const rt_object *o, const rt_ray *r,
+                                       fx_t t, fx_vec3 *pp)
+{
+    const fx_vec3 p = *pp;
+    int32_t q[3];
+    if (o->kind == RT_CONE) {
+        int64_t n[3];
+        if (!cone_step(r, t, p, o, q, n))
+            return fx_d3(0, 0, 0);
+        *pp = moved(p, q);
+        return fx_d3_normalize64(n[0], n[1], n[2]);
+    }
+    if (!side_step(r, t, p, o->a, o->r, q))
+        return fx_d3(0, 0, 0);
+    *pp = moved(p, q);
+    /* |p - a| across the axis is below 2^30 here (side_step). */
+    return fx_d3_normalize64(((int64_t)p.x - o->a.x) * (1 << 14) + q[0], 0,
+                             ((int64_t)p.z - o->a.z) * (1 << 14) + q[2]);
+}
+
 fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *pp,
                   uint16_t part, int precise)
 {
     const fx_vec3 p = *pp;
-    int32_t q[3];
     switch (o->kind) {
     case RT_SPHERE: {
         /* (p - a) / r, then one Newton step (|p - a| is r to within the
@@ -259,13 +287,13 @@ fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *pp,
             return fx_d3(0, -FX_UONE, 0);
         if (part == 2)
             return fx_d3(0, FX_UONE, 0);
+        if (precise) {
+            const fx_dir3 n = fine_normal(o, r, t, pp);
+            if (n.x != 0 || n.y != 0 || n.z != 0)
+                return n;
+        }
         fx_t x = fx_sub(p.x, o->a.x), z = fx_sub(p.z, o->a.z);
         if (o->kind == RT_CONE) {
-            int64_t nc[3];
-            if (precise && cone_step(r, t, p, o, q, nc)) {
-                *pp = moved(p, q);
-                return fx_d3_normalize64(nc[0], nc[1], nc[2]);
-            }
             fx_t rho = (fx_t)fx_sqrt_q32((uint64_t)(fx_imul64(x, x)) +
                                          (uint64_t)(fx_imul64(z, z)));
             if (rho == 0)
@@ -273,12 +301,6 @@ fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *pp,
             /* y = k rho, o->k with RT_FRAME_BITS fraction bits. */
             return fx_d3_normalize64(
                 x, shr_round(fx_imul64(o->k, rho), RT_FRAME_BITS), z);
-        }
-        if (o->kind == RT_CYLINDER && precise &&
-            side_step(r, t, p, o->a, o->r, q)) {
-            *pp = moved(p, q);
-            return fx_d3_normalize64((int64_t)x * (1 << 14) + q[0], 0,
-                                     (int64_t)z * (1 << 14) + q[2]);
         }
         return fx_d3_normalize(fx_v3(x, 0, z));
     }

@@ -134,7 +134,8 @@ void case_apex_light_along_generator(void)
                 for (int di = 0; di < 4; di++)
                     for (int si = 0; si < 4; si++)
                         for (int az = 0; az < 4; az++) {
-                            const double th = alpha + deltas[di] * (PI_D / 180);
+                            const double th =
+                                alpha + deltas[di] * (PI_D / 180);
                             const double ph = 0.4 + az * (PI_D / 2);
                             const double s = dists[si];
                             const fx_vec3 p = fx_v3(
