@@ -35,9 +35,10 @@ unsigned rt_texel(const rt_material *m, const rt_object *o, fx_vec3 p)
     return (unsigned)(idx & 1);
 }
 
-/* Lattice value in [-1, 1): the integer hash of docs/render-model.md,
- * unsigned so every product wraps by definition. */
-static fx_t lattice(uint32_t seed, uint32_t ix, uint32_t iy, uint32_t iz)
+/* Lattice value in [-1, 1) with 30 fraction bits (17 significant): the
+ * integer hash of docs/render-model.md, unsigned so every product wraps
+ * by definition. */
+static int32_t lattice(uint32_t seed, uint32_t ix, uint32_t iy, uint32_t iz)
 {
     uint32_t h = (ix * 73856093u) ^ (iy * 19349663u) ^ (iz * 83492791u) ^
                  (seed * 2654435761u);
@@ -46,31 +47,42 @@ static fx_t lattice(uint32_t seed, uint32_t ix, uint32_t iy, uint32_t iz)
     h ^= h >> 12;
     h *= 0x297a2d39u;
     h ^= h >> 15;
-    return (fx_t)(h >> 15) - FX_ONE;
+    return ((int32_t)(h >> 15) - FX_ONE) * (1 << 14);
 }
 
-static fx_t lerp(fx_t lo, fx_t hi, fx_t s)
+/* The noise works with 30 fraction bits: in Q16.16 its rounding, and a
+ * fraction from the rounded reciprocal of a large lattice, tilted a
+ * strong bump's normal by up to 3e-4, which glass of an extreme index
+ * turns into another path (docs/stability-cases.md). */
+#define NOISE_BITS 30
+
+/* lo + s (hi - lo), s in [0, 1): within [lo, hi], so the sum fits. */
+static int32_t lerp(int32_t lo, int32_t hi, int32_t s)
 {
-    return fx_add(lo, fx_mul(s, fx_sub(hi, lo)));
+    const int64_t half = (int64_t)1 << (NOISE_BITS - 1);
+    return lo + (int32_t)((s * ((int64_t)hi - lo) + half) >> NOISE_BITS);
 }
 
 /* Smoothstep weight f^2 (3 - 2f) for f in [0, 1). */
-static fx_t smooth(fx_t f)
+static int32_t smooth(int32_t f)
 {
-    return fx_mul(fx_mul(f, f), FX_INT(3) - 2 * f);
+    const int64_t half = (int64_t)1 << (NOISE_BITS - 1);
+    const int64_t f2 = (fx_imul64(f, f) + half) >> NOISE_BITS;
+    return (int32_t)((f2 * (((int64_t)3 << NOISE_BITS) - 2 * (int64_t)f) +
+                      half) >> NOISE_BITS);
 }
 
 /* Trilinear value noise in lattice cell i (coordinates modulo 2^32, as
- * the hash takes them) at fractions s. */
-static fx_t noise(uint32_t seed, const uint32_t i[3], const fx_t s[3])
+ * the hash takes them) at fractions s, with NOISE_BITS fraction bits. */
+static int32_t noise(uint32_t seed, const uint32_t i[3], const int32_t s[3])
 {
-    fx_t zv[2];
+    int32_t zv[2];
     for (int dz = 0; dz < 2; dz++) {
-        fx_t yv[2];
+        int32_t yv[2];
         for (int dy = 0; dy < 2; dy++) {
             uint32_t y = i[1] + (uint32_t)dy, z = i[2] + (uint32_t)dz;
-            fx_t v0 = lattice(seed, i[0], y, z);
-            fx_t v1 = lattice(seed, i[0] + 1u, y, z);
+            int32_t v0 = lattice(seed, i[0], y, z);
+            int32_t v1 = lattice(seed, i[0] + 1u, y, z);
             yv[dy] = lerp(v0, v1, s[0]);
         }
         zv[dz] = lerp(yv[0], yv[1], s[1]);
@@ -82,23 +94,25 @@ fx_dir3 rt_bump(const rt_material *m, const rt_object *o, fx_vec3 p,
                 fx_dir3 n)
 {
     /* Lattice cell i = floor((p - a) / size), exact, and the fraction
-     * within it, rem / size, rounded down (rem < size, so rem rcp fits 64
-     * bits and the fraction is below 1). */
+     * within it, rem / size, with NOISE_BITS fraction bits, rounded down
+     * (rem < size, so the quotient is below 2^NOISE_BITS). */
     const fx_t pk[3] = { p.x, p.y, p.z }, ak[3] = { o->a.x, o->a.y, o->a.z };
     uint32_t i[3];
-    fx_t s[3];
+    int32_t s[3];
     for (int k = 0; k < 3; k++) {
         fx_t rem;
         i[k] = (uint32_t)fx_floor_div((int64_t)pk[k] - ak[k],
                                       m->bump_scale, m->bump_rcp, &rem);
-        s[k] = smooth((fx_t)(((uint64_t)(uint32_t)rem * m->bump_rcp) >> 16));
+        s[k] = smooth((int32_t)fx_udiv64_32(
+            (uint64_t)(uint32_t)rem << NOISE_BITS, (uint32_t)m->bump_scale));
     }
-    /* norm(n + bump g), with FX_UBITS fraction bits: g bump is Q32.32
-     * (|g| <= 1, |bump| < 2^31: below 2^47). */
-    const fx_t g[3] = { noise(1, i, s), noise(2, i, s), noise(3, i, s) };
-    const int sh = 32 - FX_UBITS;
+    /* norm(n + bump g), with FX_UBITS fraction bits: g bump has
+     * 16 + NOISE_BITS (|g| <= 1, |bump| < 2^31: below 2^61). */
+    const int32_t g[3] = { noise(1, i, s), noise(2, i, s), noise(3, i, s) };
+    const int sh = 16 + NOISE_BITS - FX_UBITS;
+    const int64_t half = (int64_t)1 << (sh - 1);
     return fx_d3_normalize64(
-        (int64_t)n.x + ((fx_imul64(g[0], m->bump)) >> sh),
-        (int64_t)n.y + ((fx_imul64(g[1], m->bump)) >> sh),
-        (int64_t)n.z + ((fx_imul64(g[2], m->bump)) >> sh));
+        (int64_t)n.x + ((fx_imul64(g[0], m->bump) + half) >> sh),
+        (int64_t)n.y + ((fx_imul64(g[1], m->bump) + half) >> sh),
+        (int64_t)n.z + ((fx_imul64(g[2], m->bump) + half) >> sh));
 }

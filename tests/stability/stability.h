@@ -202,6 +202,7 @@ double rnd(void);
     X(seed_no_acne_320) \
     X(texture_cells_1ulp) \
     X(bump_lattice_1ulp) \
+    X(bump_normal_precision) \
     X(texture_size_below_1ulp) \
     X(eye_look_60000_apart) \
     X(fov_near_180_wide) \
