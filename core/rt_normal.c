@@ -24,10 +24,10 @@ static int64_t shr_round(int64_t v, int n)
 #define FINE_V_MAX ((int32_t)1 << 30) /* |p - a| per component, raw */
 #define FINE_E_MAX ((int32_t)1 << 17) /* o + t d - p: 8 Q16.16 ulps */
 #define FINE_G_MAX ((int64_t)1 << 40) /* |v|^2 - r^2, Q32.32 */
-/* The longest Newton step and the longest move, 2^-8 (2^22 with 30
- * fraction bits). */
-#define FINE_S_BITS 22
-#define FINE_Q_MAX ((int32_t)1 << 22)
+/* The longest Newton step and the longest move, 2^-5 (2^25 with 30
+ * fraction bits): a grazing ray's side root may be that far off. */
+#define FINE_S_BITS 25
+#define FINE_Q_MAX ((int32_t)1 << 25)
 
 /* -g / den with 30 fraction bits, for g with 46 and den with
  * 16 + FX_UBITS, in *s; 0 if its magnitude would pass 2^FINE_S_BITS. */
@@ -100,16 +100,19 @@ RT_ALWAYS_INLINE static inline void fine_across(const rt_ray *r,
     }
 }
 
-/* One Newton step -g / (2 den) along d, added to q: 1 while another is
+/* One Newton step -g / (2 den) along d, added to q and to *moved_t: 1
+ * while another is
  * due (the step was longer than a quarter of a Q16.16 ulp), 0 when done,
  * -1 where the step or the move leaves its range. */
 RT_ALWAYS_INLINE static inline int fine_move(const rt_ray *r, int64_t g,
-                                             int64_t den, int32_t q[3])
+                                             int64_t den, int32_t q[3],
+                                             int64_t *moved_t)
 {
     const int32_t dc[3] = { r->d.x, r->d.y, r->d.z };
     int32_t s;
     if (!newton_step(g, 2 * den, &s))
         return -1;
+    *moved_t += s;
     for (int i = 0; i < 3; i++) {
         q[i] += (int32_t)shr_round(fx_imul64(s, dc[i]), FX_UBITS);
         if (q[i] >= FINE_Q_MAX || q[i] <= -FINE_Q_MAX)
@@ -129,7 +132,7 @@ RT_ALWAYS_INLINE static inline int fine_move(const rt_ray *r, int64_t g,
  * would pass 2^-8 (a ray within rounding of tangent) or the values leave
  * their ranges, and the caller then takes p. */
 static int side_step(const rt_ray *r, fx_t t, fx_vec3 p, fx_vec3 a,
-                     fx_t rad, int32_t q[3])
+                     fx_t rad, int32_t q[3], int64_t *moved_t)
 {
     int32_t v[3];
     int64_t g0 = -fx_imul64(rad, rad), vd = 0;
@@ -139,7 +142,7 @@ static int side_step(const rt_ray *r, fx_t t, fx_vec3 p, fx_vec3 a,
         /* At p + q: g = |v + q|^2 - r^2, den = (v + q).d. */
         int64_t g = g0 * ((int64_t)1 << 14), den = vd;
         fine_across(r, v, q, &g, &den);
-        more = fine_move(r, g, den, q);
+        more = fine_move(r, g, den, q, moved_t);
         if (more < 0)
             return 0;
     }
@@ -168,7 +171,7 @@ static int64_t div_frac(int64_t n, int32_t h, int64_t *lo)
  * and the caller takes p, as side_step does, or where a flat cone's
  * k^2 w leaves 2^32. */
 static int cone_step(const rt_ray *r, fx_t t, fx_vec3 p, const rt_object *o,
-                     int32_t q[3], int64_t n[3])
+                     int32_t q[3], int64_t n[3], int64_t *moved_t)
 {
     const int64_t w = (int64_t)o->a.y + o->h - p.y; /* Q16.16, exact */
     if (w <= 0 || w >= FINE_V_MAX || o->h <= 0)
@@ -194,6 +197,8 @@ static int cone_step(const rt_ray *r, fx_t t, fx_vec3 p, const rt_object *o,
     for (int step = 0, more = 1; more && step < 4; step++) {
         /* k qy = kq + kq_lo 2^-24, 30 fraction bits (r qy < 2^53). */
         kq = div_frac((int64_t)o->r * q[1], o->h, &kq_lo);
+        if (kq >= ((int64_t)1 << 30) || kq <= -((int64_t)1 << 30))
+            return 0; /* a flat cone's k qy, kept to 32 bits */
         /* g at p + q with 46 fraction bits: (k W)^2 = (k w)^2 -
          * 2 (k w) (k qy) + (k qy)^2. */
         int64_t g = g1 + 2 * rr * kq +
@@ -204,7 +209,7 @@ static int cone_step(const rt_ray *r, fx_t t, fx_vec3 p, const rt_object *o,
         int64_t den = vd - shr_round(div_frac((int64_t)o->r * kq, o->h,
                                               &kq_lo), 14) * r->d.y;
         fine_across(r, v, q, &g, &den);
-        more = fine_move(r, g, den, q);
+        more = fine_move(r, g, den, q, moved_t);
         if (more < 0)
             return 0;
     }
@@ -236,19 +241,32 @@ RT_NOINLINE static fx_dir3 fine_normal(const rt_object *o, const rt_ray *r,
 {
     const fx_vec3 p = *pp;
     int32_t q[3];
+    int64_t moved_t = 0;
     if (o->kind == RT_CONE) {
         int64_t n[3];
-        if (!cone_step(r, t, p, o, q, n))
+        if (!cone_step(r, t, p, o, q, n, &moved_t))
             return fx_d3(0, 0, 0);
         *pp = moved(p, q);
         return fx_d3_normalize64(n[0], n[1], n[2]);
     }
-    if (!side_step(r, t, p, o->a, o->r, q))
+    if (!side_step(r, t, p, o->a, o->r, q, &moved_t))
         return fx_d3(0, 0, 0);
     *pp = moved(p, q);
     /* |p - a| across the axis is below 2^30 here (side_step). */
     return fx_d3_normalize64(((int64_t)p.x - o->a.x) * (1 << 14) + q[0], 0,
                              ((int64_t)p.z - o->a.z) * (1 << 14) + q[2]);
+}
+
+int rt_side_root(const rt_object *o, const rt_ray *r, fx_t t, int64_t *t30)
+{
+    const fx_vec3 p = fx_v3_madd_d(r->o, r->d, t);
+    int32_t q[3];
+    int64_t n[3], moved_t = 0;
+    if (!(o->kind == RT_CONE ? cone_step(r, t, p, o, q, n, &moved_t)
+                             : side_step(r, t, p, o->a, o->r, q, &moved_t)))
+        return 0;
+    *t30 = (int64_t)t * (1 << 14) + moved_t;
+    return 1;
 }
 
 fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *pp,

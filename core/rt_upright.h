@@ -157,6 +157,10 @@ RT_ALWAYS_INLINE static inline void frame_set(upright_frame *f,
     f->yt = (int32_t)shift_round((int64_t)o->a.y + o->h - o->bc.y, -sf);
 }
 
+/* A side root this near tmax (2^-4, raw) is polished (rt_side_root)
+ * before it counts as nearer. */
+#define RT_ROOT_NEAR ((int64_t)1 << 12)
+
 /* A cone's side root where its radius k (yt - y) is below this (2^-6 of
  * the frame, as a frame value), near the apex or anywhere on a needle, is
  * solved again in a finer frame (thin_side); rt_object.rinv holds the
@@ -414,6 +418,17 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
             found = 1;
             break;
         }
+    }
+    /* A side root just short of tmax (a shadow ray to a light on the
+     * rim, say, or a hit as near as another object's) is decided at the
+     * ray's own hit: the roots' rounding moves them by up to about an
+     * ulp of the frame over the cosine of incidence, which a grazing ray
+     * makes hundreds of ulps. */
+    int64_t t30;
+    if (found && tmax < FX_MAX && (int64_t)tmax - best < RT_ROOT_NEAR &&
+        rt_side_root(o, r, best, &t30) && t30 >= (int64_t)tmax * (1 << 14)) {
+        found = 0;
+        best = tmax;
     }
     found |= upright_caps(o, r, tca, &f, ur, tmin, &best, part);
     if (found)

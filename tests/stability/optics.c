@@ -170,6 +170,72 @@ void case_apex_light_along_generator(void)
                blocked, rays);
 }
 
+/* Shadow rays inside a flat cone (radius / height 10 to 60, near the
+ * origin and 29,500 units out), from just inside its side to a light on
+ * its base rim: the chord lies inside the solid, so nothing blocks it,
+ * but it grazes the side for most of its length (a few thousandths of a
+ * radian in random scene 5990), and the side's root at the rim came out
+ * up to 1,500 ulps early, short of t_max: a dark spot under a cone lit
+ * from its rim. A side root within 2^-4 of t_max is now decided at the
+ * ray's own hit (rt_side_root, Newton steps as for a reflective side). */
+void case_light_on_flat_cone_rim(void)
+{
+    static const double slopes[] = { 10, 25, 49.3, 60 };
+    static const double xs[] = { 0.75, -29537.55890013 };
+    long rays = 0, blocked = 0;
+    for (int xi = 0; xi < 2; xi++)
+        for (int ki = 0; ki < 4; ki++) {
+            const double rad = 91.60635273, h = rad / slopes[ki];
+            rt_object c = upright(RT_CONE, xs[xi], 16.39201709, 25.36923067,
+                                  rad, h);
+            const double ax = F2D(c.a.x), ay = F2D(c.a.y), az = F2D(c.a.z);
+            const double R = F2D(c.r), H = F2D(c.h);
+            for (int li = 0; li < 4; li++) {
+                const double pl = 0.3 + li * 1.57;
+                const fx_vec3 light = fx_v3(D2F(ax + R * cos(pl)), c.a.y,
+                                            D2F(az + R * sin(pl)));
+                for (int k = 0; k < 48; k++) {
+                    /* A point on the side, 0.3 to 0.95 of the way out,
+                     * moved EPS twice inside along the normal. */
+                    const double f = 0.3 + 0.65 * (k % 8) / 7.0;
+                    const double ph = pl + 0.05 + 0.9 * (k / 8) / 6.0;
+                    const double nl = sqrt(1 + (R / H) * (R / H));
+                    const double nx = cos(ph) / nl, ny = (R / H) / nl,
+                                 nz = sin(ph) / nl;
+                    const double in = 2 * F2D(RT_EPS);
+                    const fx_vec3 p = fx_v3(
+                        D2F(ax + R * f * cos(ph) - in * nx),
+                        D2F(ay + H * (1 - f) - in * ny),
+                        D2F(az + R * f * sin(ph) - in * nz));
+                    const fx_vec3 lv = fx_v3_sub(light, p);
+                    const fx_dir3 ld = fx_d3_normalize(lv);
+                    /* Rays within 0.002 rad of the side where they
+                     * start are past the documented limit. */
+                    if (fabs(U2D(ld.x) * nx + U2D(ld.y) * ny +
+                             U2D(ld.z) * nz) < 0.002)
+                        continue;
+                    rt_ray r;
+                    rt_ray_set(&r, p, ld);
+                    const fx_t tmax = fx_sub(fx_pd_dot(lv, ld), RT_EPS);
+                    fx_t t;
+                    uint16_t part;
+                    rays++;
+                    if (rt_intersect(&c, &r, RT_EPS, tmax, &t, &part)) {
+                        blocked++;
+                        if (verbose)
+                            printf("    slope %g%s, f %.2f: blocked at "
+                                   "t = %.6f of %.6f (part %u)\n",
+                                   slopes[ki], xi ? ", far" : "", f,
+                                   F2D(t), F2D(tmax), part);
+                    }
+                }
+            }
+        }
+    if (!CHECK(blocked == 0 && rays > 500) || verbose)
+        printf("    %ld of %ld shadow rays blocked short of the rim\n",
+               blocked, rays);
+}
+
 /* A strongly bumped mirror on the underside of a flat open cone (radius
  * 701, height 13.3, 30,000 units from the origin), seen from below near
  * its apex (random scene 3596): the reflection grazes the cone's inside

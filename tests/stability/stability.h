@@ -210,6 +210,7 @@ double rnd(void);
     X(glass_ior_100_outer_ring) \
     X(light_at_cone_apex) \
     X(apex_light_along_generator) \
+    X(light_on_flat_cone_rim) \
     X(bumped_mirror_under_flat_cone) \
     X(lights_on_surfaces) \
     X(far_tilted_quads) \
