@@ -193,15 +193,14 @@ static int hit_sphere(const rt_object *o, const rt_ray *r, fx_t tmin,
     return 1;
 }
 
-static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
-                    fx_t tmax, fx_t *t, uint16_t *part)
+/* hit_quad's distance t (Q16.16) to the plane of quad o, or 2^32 - 1
+ * for none (a ray parallel to it or leaving its side, or t >= 2^32). */
+static uint32_t quad_t(const rt_object *o, const rt_ray *r)
 {
-    /* A flat quad (rt_object.flat) has n = (0, n.y, 0): the same sums
-     * without the zero terms. */
     const int flat = o->flat;
     int64_t den = flat ? fx_imul64(r->d.y, o->n.y) : fx_d3_dot_raw(r->d, o->n);
     if (den < RT_PAR_DOT && den > -RT_PAR_DOT)
-        return 0;
+        return 0xFFFFFFFFu;
     /* num = (a - o).n, the plane's distance from the origin, with 16 +
      * FX_UBITS fraction bits (|num| < 2^63): exact, as a grazing ray
      * needs it (a light on a tilted quad, seen nearly in its plane), and
@@ -219,7 +218,7 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
     else
         num = fx_pd_dot_diff_raw(o->a, r->o, o->n);
     if ((num < 0) != (den < 0))
-        return 0;
+        return 0xFFFFFFFFu;
     /* t = num 2^FX_UBITS / den in Q16.16, both of one sign, rounded: a
      * 64/32 division by den's top 32 bits (2^-31 relative, so grazing
      * rays keep their precision). A quotient of 2^32 or more is beyond
@@ -233,13 +232,49 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
     const uint32_t ud = (uint32_t)(uden >> sd);
     const int lsh = FX_UBITS - sd; /* 0..FX_UBITS, as |den| <= 2^61 */
     if ((un >> (32 - lsh)) >= ud)
-        return 0;
+        return 0xFFFFFFFFu;
     /* Rounded to nearest; for an axis-aligned quad ud is even or sd = 0,
      * so this is plane_t's floor((n + floor(d / 2)) / d) exactly. */
     const uint64_t n2 = (un << lsh) + (ud >> 1);
     if ((n2 >> 32) >= ud)
-        return 0;
-    uint32_t tq = fx_udiv64_32(n2, ud);
+        return 0xFFFFFFFFu;
+    return fx_udiv64_32(n2, ud);
+}
+
+static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
+                    fx_t tmax, fx_t *t, uint16_t *part)
+{
+    /* A flat quad (rt_object.flat) has n = (0, n.y, 0): the same sums
+     * without the zero terms. */
+    const int flat = o->flat;
+    uint32_t tq;
+    if (flat && (o->n.y == FX_UONE || o->n.y == -FX_UONE)) {
+        /* n.y = s 2^FX_UBITS: num = 2^FX_UBITS m and den = 2^FX_UBITS
+         * s d.y for m = dist - s o.y, so the rounded quotient below is
+         * floor((|m| 2^FX_UBITS + floor(|d.y| / 2)) / |d.y|) whatever
+         * shift normalises den: the same t, without the 64-bit shifts
+         * (the floor quad of most scenes; every camera ray tests it). */
+        const int up = o->n.y > 0;
+        const int32_t sdy = up ? r->d.y : -r->d.y;
+        const uint32_t ud = (uint32_t)(sdy < 0 ? -sdy : sdy);
+        /* |den| < RT_PAR_DOT */
+        if (ud < ((uint32_t)1 << (FX_UBITS - 16)))
+            return 0;
+        const int64_t m =
+            (int64_t)o->dist - (up ? r->o.y : -(int64_t)r->o.y);
+        if ((m < 0) != (sdy < 0))
+            return 0;
+        /* |m| <= 2^32: below 2^62 */
+        const uint64_t n2 = ((uint64_t)(m < 0 ? -m : m) << FX_UBITS) +
+                            (ud >> 1);
+        if ((n2 >> 32) >= ud)
+            return 0;
+        tq = fx_udiv64_32(n2, ud);
+    } else {
+        tq = quad_t(o, r);
+        if (tq == 0xFFFFFFFFu)
+            return 0;
+    }
     if ((int64_t)tq <= tmin || (int64_t)tq >= tmax)
         return 0;
     const fx_t tt = (fx_t)tq; /* below tmax, so it fits */
