@@ -68,6 +68,7 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
 {
     const fx_vec3 c = *cp;
     int64_t t;
+    uint64_t h2;
     if (small && ray->small) {
         /* The common case, in 32-bit operands (smull/smlal on a Cortex-M3):
          * the same values as the general path below. */
@@ -103,6 +104,10 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         h[0] = hx;
         h[1] = hy;
         h[2] = hz;
+        /* 32-bit squares: one multiply each on a Cortex-M3, four 16-bit
+         * ones inline on an M0 (not the library's 64-bit multiply). */
+        h2 = (uint64_t)fx_imul64(hx, hx) + (uint64_t)fx_imul64(hy, hy) +
+             (uint64_t)fx_imul64(hz, hz);
         t = t32;
     } else {
         int64_t ox = (int64_t)c.x - ray->o.x;
@@ -122,9 +127,9 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         if (h[0] > rs || h[0] < -rs || h[1] > rs || h[1] < -rs ||
             h[2] > rs || h[2] < -rs)
             return 0;
+        h2 = (uint64_t)(h[0] * h[0]) + (uint64_t)(h[1] * h[1]) +
+             (uint64_t)(h[2] * h[2]);
     }
-    uint64_t h2 = (uint64_t)(h[0] * h[0]) + (uint64_t)(h[1] * h[1]) +
-                  (uint64_t)(h[2] * h[2]);
     uint64_t r2 = (uint64_t)(fx_imul64(r, r));
     /* |h|^2 is off by at most about 2 |h| + 1 (Q32.32): a ray that close
      * to the silhouette is decided by bsphere_fine. */
@@ -183,14 +188,24 @@ static int hit_sphere(const rt_object *o, const rt_ray *r, fx_t tmin,
     fx_t best = tmax;
     if (!bsphere(&o->a, o->r, o->small, r, tmin, tmax, &tca, &disc, h))
         return 0;
-    int64_t thc = fx_sqrt_q32(disc);
+    const uint32_t sq = fx_sqrt_q32(disc);
+    int64_t thc = sq;
     /* In units of |d| = sqrt(1 + e): thc (1 - e / 2). */
-    thc -= (thc * r->e + ((int64_t)1 << 32)) >> 33;
+    thc -= (fx_iumul64(r->e, sq) + ((int64_t)1 << 32)) >> 33;
     if (!take(tca - thc, tmin, &best) && !take(tca + thc, tmin, &best))
         return 0;
     *t = best;
     *part = 0;
     return 1;
+}
+
+/* q p for |q| < 2^32: where 64-bit products are a library call (the
+ * M0), 32-bit operands take fx_imul64's inline one when q fits. */
+static inline int64_t mul_q(int64_t q, int32_t p)
+{
+    if (FX_SOFT_MUL64 && q == (int32_t)q)
+        return fx_imul64((int32_t)q, p);
+    return q * p;
 }
 
 /* hit_quad's distance t (Q16.16) to the plane of quad o, or 2^32 - 1
@@ -290,11 +305,11 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
         return 0;
     int64_t u, v; /* 16 + FX_UBITS fraction bits */
     if (flat == 1) { /* pu = (0, 0, pu.z), pv = (pv.x, 0, 0) */
-        u = qz * o->pu.z;
-        v = qx * o->pv.x;
+        u = mul_q(qz, o->pu.z);
+        v = mul_q(qx, o->pv.x);
     } else if (flat == 2) { /* pu = (pu.x, 0, 0), pv = (0, 0, pv.z) */
-        u = qx * o->pu.x;
-        v = qz * o->pv.z;
+        u = mul_q(qx, o->pu.x);
+        v = mul_q(qz, o->pv.z);
     } else {
         int64_t qy = (int64_t)r->o.y - o->a.y +
                      ((fx_imul64(tt, r->d.y) + UHALF) >> FX_UBITS);
