@@ -199,8 +199,9 @@ static int hit_sphere(const rt_object *o, const rt_ray *r, fx_t tmin,
     return 1;
 }
 
-/* q p for |q| < 2^32: where 64-bit products are a library call (the
- * M0), 32-bit operands take fx_imul64's inline one when q fits. */
+/* q p, exact (the caller keeps it within 64 bits): where 64-bit products
+ * are a library call (the M0), 32-bit operands take fx_imul64's inline
+ * one when q fits. */
 static inline int64_t mul_q(int64_t q, int32_t p)
 {
     if (FX_SOFT_MUL64 && q == (int32_t)q)
