@@ -53,6 +53,21 @@ RT_NOINLINE static int bsphere_fine(const fx_vec3 *c, int64_t t,
     return 1;
 }
 
+/* t e 2^-32 rounded (ties up), for bsphere's closest approach in units
+ * of |d|. e = |d|^2 - 1 (rt_ray.e) is a few Q32.32 ulps: where 64-bit
+ * products are built from 16-bit ones (the M0), two 32-bit products of
+ * t's halves and e make t e. */
+static inline int32_t unit_corr(int32_t t, int32_t e)
+{
+    if (FX_SOFT_MUL64 && e >= -32768 && e <= 32767) {
+        const int32_t hi = (t >> 16) * e; /* |hi| <= 2^30 */
+        const int32_t lo = (int32_t)((uint32_t)t & 0xFFFFu) * e;
+        return (int32_t)(((int64_t)hi * 65536 + lo + ((int64_t)1 << 31)) >>
+                         32);
+    }
+    return (int32_t)((fx_imul64(t, e) + ((int64_t)1 << 31)) >> 32);
+}
+
 /* Closest approach of the ray to the bounding sphere (c, r). Returns 0 when
  * the ray misses it or meets it only outside (tmin, tmax); else *tca
  * (Q16.16, may exceed the fx_t range), *disc = r^2 - |h|^2 (Q32.32, the
@@ -77,7 +92,7 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
                     fx_imul64(oz, ray->d.z);
         /* |t| <= |oc| < sqrt(3) 2^30, so t fits; t +- r may not. */
         int32_t t32 = (int32_t)((q + UHALF) >> FX_UBITS);
-        t32 -= (int32_t)((fx_imul64(t32, ray->e) + ((int64_t)1 << 31)) >> 32);
+        t32 -= unit_corr(t32, ray->e);
 #if FX_HAVE_OVERFLOW_BUILTINS
         /* The same tests in 32 bits (r >= 0): t32 + r <= tmin is
          * t32 <= tmin - r, false when that underflows; t32 - r >= tmax is
