@@ -53,6 +53,32 @@ RT_NOINLINE static int bsphere_fine(const fx_vec3 *c, int64_t t,
     return 1;
 }
 
+/* x0 y0 + x1 y1 + x2 y2, exact, for |xi| < 2^30 and |yi| <= 2^30 (a
+ * small offset and a unit vector). Where 64-bit products are built from
+ * 16-bit ones (the M0), the three terms' partial products are summed
+ * first and joined once: the high ones in 32 bits (each below 2^28),
+ * each term's two middle ones in 32 bits (each below 2^30). */
+static inline int64_t dot_small(int32_t x0, int32_t y0, int32_t x1,
+                                int32_t y1, int32_t x2, int32_t y2)
+{
+    if (!FX_SOFT_MUL64)
+        return fx_imul64(x0, y0) + fx_imul64(x1, y1) + fx_imul64(x2, y2);
+    const int32_t xh0 = x0 >> 16, yh0 = y0 >> 16;
+    const int32_t xh1 = x1 >> 16, yh1 = y1 >> 16;
+    const int32_t xh2 = x2 >> 16, yh2 = y2 >> 16;
+    const uint32_t xl0 = (uint32_t)x0 & 0xFFFFu, yl0 = (uint32_t)y0 & 0xFFFFu;
+    const uint32_t xl1 = (uint32_t)x1 & 0xFFFFu, yl1 = (uint32_t)y1 & 0xFFFFu;
+    const uint32_t xl2 = (uint32_t)x2 & 0xFFFFu, yl2 = (uint32_t)y2 & 0xFFFFu;
+    const int32_t hh = xh0 * yh0 + xh1 * yh1 + xh2 * yh2;
+    const int64_t mid = (int64_t)(xh0 * (int32_t)yl0 + (int32_t)xl0 * yh0) +
+                        (int64_t)(xh1 * (int32_t)yl1 + (int32_t)xl1 * yh1) +
+                        (int64_t)(xh2 * (int32_t)yl2 + (int32_t)xl2 * yh2);
+    const uint64_t ll = (uint64_t)(xl0 * yl0) + (xl1 * yl1) +
+                        (uint64_t)(xl2 * yl2);
+    return (int64_t)(((uint64_t)(int64_t)hh << 32) + ((uint64_t)mid << 16) +
+                     ll);
+}
+
 /* t e 2^-32 rounded (ties up), for bsphere's closest approach in units
  * of |d|. e = |d|^2 - 1 (rt_ray.e) is a few Q32.32 ulps: where 64-bit
  * products are built from 16-bit ones (the M0), two 32-bit products of
@@ -88,8 +114,7 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         /* The common case, in 32-bit operands (smull/smlal on a Cortex-M3):
          * the same values as the general path below. */
         int32_t ox = c.x - ray->o.x, oy = c.y - ray->o.y, oz = c.z - ray->o.z;
-        int64_t q = fx_imul64(ox, ray->d.x) + fx_imul64(oy, ray->d.y) +
-                    fx_imul64(oz, ray->d.z);
+        int64_t q = dot_small(ox, ray->d.x, oy, ray->d.y, oz, ray->d.z);
         /* |t| <= |oc| < sqrt(3) 2^30, so t fits; t +- r may not. */
         int32_t t32 = (int32_t)((q + UHALF) >> FX_UBITS);
         t32 -= unit_corr(t32, ray->e);
