@@ -79,6 +79,27 @@ static inline int64_t dot_small(int32_t x0, int32_t y0, int32_t x1,
                      ll);
 }
 
+/* t d 2^-FX_UBITS rounded to nearest (ties up), for |t| < 7 2^28 and
+ * |d| <= 2^FX_UBITS (a closest approach and a unit component). Where
+ * 64-bit products are built from 16-bit ones (the M0), the rounding is
+ * taken from the partial products: t d = th dh 2^32 + m 2^16 + (the low
+ * 16 bits of tl dl), and only m, below 2^32, needs more than 32 bits. */
+static inline int32_t mul_round_u(int32_t t, int32_t d)
+{
+    if (FX_SOFT_MUL64 && FX_UBITS > 16) {
+        const int32_t th = t >> 16, dh = d >> 16;
+        const uint32_t tl = (uint32_t)t & 0xFFFFu, dl = (uint32_t)d & 0xFFFFu;
+        const int64_t m = (int64_t)(th * (int32_t)dl) + (int32_t)tl * dh +
+                          ((tl * dl) >> 16) +
+                          ((int64_t)1 << ((FX_UBITS - 17) & 31));
+        /* |th dh 2^(32 - FX_UBITS)| < 7 2^28. (The & 31 keeps the shifts
+         * of the branch not taken non-negative for static analysis.) */
+        return th * dh * (1 << (32 - FX_UBITS)) +
+               (int32_t)(m >> ((FX_UBITS - 16) & 31));
+    }
+    return (int32_t)((fx_imul64(t, d) + UHALF) >> FX_UBITS);
+}
+
 /* t e 2^-32 rounded (ties up), for bsphere's closest approach in units
  * of |d|. e = |d|^2 - 1 (rt_ray.e) is a few Q32.32 ulps: where 64-bit
  * products are built from 16-bit ones (the M0), two 32-bit products of
@@ -132,9 +153,9 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
             return 0;
 #endif
         /* Each h component is bounded by |oc| (h is a projection). */
-        int32_t hx = ox - (int32_t)((fx_imul64(t32, ray->d.x) + UHALF) >> FX_UBITS);
-        int32_t hy = oy - (int32_t)((fx_imul64(t32, ray->d.y) + UHALF) >> FX_UBITS);
-        int32_t hz = oz - (int32_t)((fx_imul64(t32, ray->d.z) + UHALF) >> FX_UBITS);
+        int32_t hx = ox - mul_round_u(t32, ray->d.x);
+        int32_t hy = oy - mul_round_u(t32, ray->d.y);
+        int32_t hz = oz - mul_round_u(t32, ray->d.z);
         /* One ulp of slack (r < 2^29 here): the rounding of h cannot
          * decide this. */
         const int32_t rs = r + 1;
