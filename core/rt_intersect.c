@@ -53,6 +53,68 @@ RT_NOINLINE static int bsphere_fine(const fx_vec3 *c, int64_t t,
     return 1;
 }
 
+/* x0 y0 + x1 y1 + x2 y2, exact, for |xi| < 2^30 and |yi| <= 2^30 (a
+ * small offset and a unit vector). Where 64-bit products are built from
+ * 16-bit ones (the M0), the three terms' partial products are summed
+ * first and joined once: the high ones in 32 bits (each below 2^28),
+ * each term's two middle ones in 32 bits (each below 2^30). */
+static inline int64_t dot_small(int32_t x0, int32_t y0, int32_t x1,
+                                int32_t y1, int32_t x2, int32_t y2)
+{
+    if (!FX_SOFT_MUL64)
+        return fx_imul64(x0, y0) + fx_imul64(x1, y1) + fx_imul64(x2, y2);
+    const int32_t xh0 = x0 >> 16, yh0 = y0 >> 16;
+    const int32_t xh1 = x1 >> 16, yh1 = y1 >> 16;
+    const int32_t xh2 = x2 >> 16, yh2 = y2 >> 16;
+    const uint32_t xl0 = (uint32_t)x0 & 0xFFFFu, yl0 = (uint32_t)y0 & 0xFFFFu;
+    const uint32_t xl1 = (uint32_t)x1 & 0xFFFFu, yl1 = (uint32_t)y1 & 0xFFFFu;
+    const uint32_t xl2 = (uint32_t)x2 & 0xFFFFu, yl2 = (uint32_t)y2 & 0xFFFFu;
+    const int32_t hh = xh0 * yh0 + xh1 * yh1 + xh2 * yh2;
+    const int64_t mid = (int64_t)(xh0 * (int32_t)yl0 + (int32_t)xl0 * yh0) +
+                        (int64_t)(xh1 * (int32_t)yl1 + (int32_t)xl1 * yh1) +
+                        (int64_t)(xh2 * (int32_t)yl2 + (int32_t)xl2 * yh2);
+    const uint64_t ll = (uint64_t)(xl0 * yl0) + (xl1 * yl1) +
+                        (uint64_t)(xl2 * yl2);
+    return (int64_t)(((uint64_t)(int64_t)hh << 32) + ((uint64_t)mid << 16) +
+                     ll);
+}
+
+/* t d 2^-FX_UBITS rounded to nearest (ties up), for |t| < 7 2^28 and
+ * |d| <= 2^FX_UBITS (a closest approach and a unit component). Where
+ * 64-bit products are built from 16-bit ones (the M0), the rounding is
+ * taken from the partial products: t d = th dh 2^32 + m 2^16 + (the low
+ * 16 bits of tl dl), and only m, below 2^32, needs more than 32 bits. */
+static inline int32_t mul_round_u(int32_t t, int32_t d)
+{
+    if (FX_SOFT_MUL64 && FX_UBITS > 16) {
+        const int32_t th = t >> 16, dh = d >> 16;
+        const uint32_t tl = (uint32_t)t & 0xFFFFu, dl = (uint32_t)d & 0xFFFFu;
+        const int64_t m = (int64_t)(th * (int32_t)dl) + (int32_t)tl * dh +
+                          ((tl * dl) >> 16) +
+                          ((int64_t)1 << ((FX_UBITS - 17) & 31));
+        /* |th dh 2^(32 - FX_UBITS)| < 7 2^28. (The & 31 keeps the shifts
+         * of the branch not taken non-negative for static analysis.) */
+        return th * dh * (1 << (32 - FX_UBITS)) +
+               (int32_t)(m >> ((FX_UBITS - 16) & 31));
+    }
+    return (int32_t)((fx_imul64(t, d) + UHALF) >> FX_UBITS);
+}
+
+/* t e 2^-32 rounded (ties up), for bsphere's closest approach in units
+ * of |d|. e = |d|^2 - 1 (rt_ray.e) is a few Q32.32 ulps: where 64-bit
+ * products are built from 16-bit ones (the M0), two 32-bit products of
+ * t's halves and e make t e. */
+static inline int32_t unit_corr(int32_t t, int32_t e)
+{
+    if (FX_SOFT_MUL64 && e >= -32768 && e <= 32767) {
+        const int32_t hi = (t >> 16) * e; /* |hi| <= 2^30 */
+        const int32_t lo = (int32_t)((uint32_t)t & 0xFFFFu) * e;
+        return (int32_t)(((int64_t)hi * 65536 + lo + ((int64_t)1 << 31)) >>
+                         32);
+    }
+    return (int32_t)((fx_imul64(t, e) + ((int64_t)1 << 31)) >> 32);
+}
+
 /* Closest approach of the ray to the bounding sphere (c, r). Returns 0 when
  * the ray misses it or meets it only outside (tmin, tmax); else *tca
  * (Q16.16, may exceed the fx_t range), *disc = r^2 - |h|^2 (Q32.32, the
@@ -68,15 +130,15 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
 {
     const fx_vec3 c = *cp;
     int64_t t;
+    uint64_t h2;
     if (small && ray->small) {
         /* The common case, in 32-bit operands (smull/smlal on a Cortex-M3):
          * the same values as the general path below. */
         int32_t ox = c.x - ray->o.x, oy = c.y - ray->o.y, oz = c.z - ray->o.z;
-        int64_t q = fx_imul64(ox, ray->d.x) + fx_imul64(oy, ray->d.y) +
-                    fx_imul64(oz, ray->d.z);
+        int64_t q = dot_small(ox, ray->d.x, oy, ray->d.y, oz, ray->d.z);
         /* |t| <= |oc| < sqrt(3) 2^30, so t fits; t +- r may not. */
         int32_t t32 = (int32_t)((q + UHALF) >> FX_UBITS);
-        t32 -= (int32_t)((fx_imul64(t32, ray->e) + ((int64_t)1 << 31)) >> 32);
+        t32 -= unit_corr(t32, ray->e);
 #if FX_HAVE_OVERFLOW_BUILTINS
         /* The same tests in 32 bits (r >= 0): t32 + r <= tmin is
          * t32 <= tmin - r, false when that underflows; t32 - r >= tmax is
@@ -91,9 +153,9 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
             return 0;
 #endif
         /* Each h component is bounded by |oc| (h is a projection). */
-        int32_t hx = ox - (int32_t)((fx_imul64(t32, ray->d.x) + UHALF) >> FX_UBITS);
-        int32_t hy = oy - (int32_t)((fx_imul64(t32, ray->d.y) + UHALF) >> FX_UBITS);
-        int32_t hz = oz - (int32_t)((fx_imul64(t32, ray->d.z) + UHALF) >> FX_UBITS);
+        int32_t hx = ox - mul_round_u(t32, ray->d.x);
+        int32_t hy = oy - mul_round_u(t32, ray->d.y);
+        int32_t hz = oz - mul_round_u(t32, ray->d.z);
         /* One ulp of slack (r < 2^29 here): the rounding of h cannot
          * decide this. */
         const int32_t rs = r + 1;
@@ -103,6 +165,10 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         h[0] = hx;
         h[1] = hy;
         h[2] = hz;
+        /* 32-bit squares: one multiply each on a Cortex-M3, four 16-bit
+         * ones inline on an M0 (not the library's 64-bit multiply). */
+        h2 = (uint64_t)fx_imul64(hx, hx) + (uint64_t)fx_imul64(hy, hy) +
+             (uint64_t)fx_imul64(hz, hz);
         t = t32;
     } else {
         int64_t ox = (int64_t)c.x - ray->o.x;
@@ -122,9 +188,9 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         if (h[0] > rs || h[0] < -rs || h[1] > rs || h[1] < -rs ||
             h[2] > rs || h[2] < -rs)
             return 0;
+        h2 = (uint64_t)(h[0] * h[0]) + (uint64_t)(h[1] * h[1]) +
+             (uint64_t)(h[2] * h[2]);
     }
-    uint64_t h2 = (uint64_t)(h[0] * h[0]) + (uint64_t)(h[1] * h[1]) +
-                  (uint64_t)(h[2] * h[2]);
     uint64_t r2 = (uint64_t)(fx_imul64(r, r));
     /* |h|^2 is off by at most about 2 |h| + 1 (Q32.32): a ray that close
      * to the silhouette is decided by bsphere_fine. */
@@ -183,9 +249,10 @@ static int hit_sphere(const rt_object *o, const rt_ray *r, fx_t tmin,
     fx_t best = tmax;
     if (!bsphere(&o->a, o->r, o->small, r, tmin, tmax, &tca, &disc, h))
         return 0;
-    int64_t thc = fx_sqrt_q32(disc);
+    const uint32_t sq = fx_sqrt_q32(disc);
+    int64_t thc = sq;
     /* In units of |d| = sqrt(1 + e): thc (1 - e / 2). */
-    thc -= (thc * r->e + ((int64_t)1 << 32)) >> 33;
+    thc -= (fx_iumul64(r->e, sq) + ((int64_t)1 << 32)) >> 33;
     if (!take(tca - thc, tmin, &best) && !take(tca + thc, tmin, &best))
         return 0;
     *t = best;
@@ -193,15 +260,24 @@ static int hit_sphere(const rt_object *o, const rt_ray *r, fx_t tmin,
     return 1;
 }
 
-static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
-                    fx_t tmax, fx_t *t, uint16_t *part)
+/* q p, exact (the caller keeps it within 64 bits): where 64-bit products
+ * are a library call (the M0), 32-bit operands take fx_imul64's inline
+ * one when q fits. */
+static inline int64_t mul_q(int64_t q, int32_t p)
 {
-    /* A flat quad (rt_object.flat) has n = (0, n.y, 0): the same sums
-     * without the zero terms. */
+    if (FX_SOFT_MUL64 && q == (int32_t)q)
+        return fx_imul64((int32_t)q, p);
+    return q * p;
+}
+
+/* hit_quad's distance t (Q16.16) to the plane of quad o, or 2^32 - 1
+ * for none (a ray parallel to it or leaving its side, or t >= 2^32). */
+static uint32_t quad_t(const rt_object *o, const rt_ray *r)
+{
     const int flat = o->flat;
     int64_t den = flat ? fx_imul64(r->d.y, o->n.y) : fx_d3_dot_raw(r->d, o->n);
     if (den < RT_PAR_DOT && den > -RT_PAR_DOT)
-        return 0;
+        return 0xFFFFFFFFu;
     /* num = (a - o).n, the plane's distance from the origin, with 16 +
      * FX_UBITS fraction bits (|num| < 2^63): exact, as a grazing ray
      * needs it (a light on a tilted quad, seen nearly in its plane), and
@@ -219,7 +295,7 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
     else
         num = fx_pd_dot_diff_raw(o->a, r->o, o->n);
     if ((num < 0) != (den < 0))
-        return 0;
+        return 0xFFFFFFFFu;
     /* t = num 2^FX_UBITS / den in Q16.16, both of one sign, rounded: a
      * 64/32 division by den's top 32 bits (2^-31 relative, so grazing
      * rays keep their precision). A quotient of 2^32 or more is beyond
@@ -233,13 +309,49 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
     const uint32_t ud = (uint32_t)(uden >> sd);
     const int lsh = FX_UBITS - sd; /* 0..FX_UBITS, as |den| <= 2^61 */
     if ((un >> (32 - lsh)) >= ud)
-        return 0;
+        return 0xFFFFFFFFu;
     /* Rounded to nearest; for an axis-aligned quad ud is even or sd = 0,
      * so this is plane_t's floor((n + floor(d / 2)) / d) exactly. */
     const uint64_t n2 = (un << lsh) + (ud >> 1);
     if ((n2 >> 32) >= ud)
-        return 0;
-    uint32_t tq = fx_udiv64_32(n2, ud);
+        return 0xFFFFFFFFu;
+    return fx_udiv64_32(n2, ud);
+}
+
+static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
+                    fx_t tmax, fx_t *t, uint16_t *part)
+{
+    /* A flat quad (rt_object.flat) has n = (0, n.y, 0): the same sums
+     * without the zero terms. */
+    const int flat = o->flat;
+    uint32_t tq;
+    if (flat && (o->n.y == FX_UONE || o->n.y == -FX_UONE)) {
+        /* n.y = s 2^FX_UBITS: num = 2^FX_UBITS m and den = 2^FX_UBITS
+         * s d.y for m = dist - s o.y, so the rounded quotient below is
+         * floor((|m| 2^FX_UBITS + floor(|d.y| / 2)) / |d.y|) whatever
+         * shift normalises den: the same t, without the 64-bit shifts
+         * (the floor quad of most scenes; every camera ray tests it). */
+        const int up = o->n.y > 0;
+        const int32_t sdy = up ? r->d.y : -r->d.y;
+        const uint32_t ud = (uint32_t)(sdy < 0 ? -sdy : sdy);
+        /* |den| < RT_PAR_DOT */
+        if (ud < ((uint32_t)1 << (FX_UBITS - 16)))
+            return 0;
+        const int64_t m =
+            (int64_t)o->dist - (up ? r->o.y : -(int64_t)r->o.y);
+        if ((m < 0) != (sdy < 0))
+            return 0;
+        /* |m| <= 2^32: below 2^62 */
+        const uint64_t n2 = ((uint64_t)(m < 0 ? -m : m) << FX_UBITS) +
+                            (ud >> 1);
+        if ((n2 >> 32) >= ud)
+            return 0;
+        tq = fx_udiv64_32(n2, ud);
+    } else {
+        tq = quad_t(o, r);
+        if (tq == 0xFFFFFFFFu)
+            return 0;
+    }
     if ((int64_t)tq <= tmin || (int64_t)tq >= tmax)
         return 0;
     const fx_t tt = (fx_t)tq; /* below tmax, so it fits */
@@ -255,11 +367,11 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
         return 0;
     int64_t u, v; /* 16 + FX_UBITS fraction bits */
     if (flat == 1) { /* pu = (0, 0, pu.z), pv = (pv.x, 0, 0) */
-        u = qz * o->pu.z;
-        v = qx * o->pv.x;
+        u = mul_q(qz, o->pu.z);
+        v = mul_q(qx, o->pv.x);
     } else if (flat == 2) { /* pu = (pu.x, 0, 0), pv = (0, 0, pv.z) */
-        u = qx * o->pu.x;
-        v = qz * o->pv.z;
+        u = mul_q(qx, o->pu.x);
+        v = mul_q(qz, o->pv.z);
     } else {
         int64_t qy = (int64_t)r->o.y - o->a.y +
                      ((fx_imul64(tt, r->d.y) + UHALF) >> FX_UBITS);

@@ -98,7 +98,9 @@ RT_ALWAYS_INLINE static inline int quadratic(int64_t a, int64_t b,
         root[0] = root[1] = frame_div(-c, 2 * b);
         return 1;
     }
-    int64_t disc = b * b - a * c; /* each product below 2^60 */
+    /* a, b and c are now within 30 bits: 32-bit products. */
+    int64_t disc = fx_imul64((int32_t)b, (int32_t)b) -
+                   fx_imul64((int32_t)a, (int32_t)c);
     if (disc < 0) {
         int64_t aa = a < 0 ? -a : a, ab = b < 0 ? -b : b;
         int64_t ac = c < 0 ? -c : c;
@@ -384,8 +386,10 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
         const int32_t kdy = (int32_t)frame_round(fx_imul64(o->k, dy));
         const int64_t ky = frame_round(fx_imul64(o->k, yt - py));
         a -= frame_round(fx_imul64(kdy, kdy));
-        b += frame_round(ky * kdy);
-        c = frame_round(pp - ky * ky);
+        b += frame_round(mul_q(ky, kdy));
+        c = frame_round(pp - (FX_SOFT_MUL64 && ky == (int32_t)ky
+                                  ? fx_imul64((int32_t)ky, (int32_t)ky)
+                                  : ky * ky));
     }
     /* Clearly steeper than the side (not within rounding of a
      * generator's direction, where one root is far and saturates). */
@@ -403,7 +407,8 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
         /* Roots of a real hit lie within the bounding sphere's chord. */
         if (root[i] > 4 * one || root[i] < -4 * one)
             continue;
-        int64_t y = py + frame_round(root[i] * dy);
+        /* |root| <= 2^(RT_FRAME_BITS + 2): 32-bit operands. */
+        int64_t y = py + frame_round(fx_imul64((int32_t)root[i], dy));
         /* The side reaches RT_RIM_SLACK frame ulps past each cap's
          * plane, as the caps reach past the side's radius below: the
          * two are rounded separately, and no ray may pass between. A
@@ -439,7 +444,8 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
      * takes a discriminant within its rounding for a tangent's.) */
     for (int i = 0; cone && i < n; i++)
         if (root[i] <= 4 * one && root[i] >= -4 * one &&
-            py + frame_round(root[i] * dy) > yt - (int64_t)o->rinv)
+            py + frame_round(fx_imul64((int32_t)root[i], dy)) >
+                yt - (int64_t)o->rinv)
             return upright_thin(o, r, tca, root[i], tmin, tmax, found, t,
                                 part);
     return found;
