@@ -148,7 +148,7 @@ rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
     rt_draft draft; /* with o->draft: the centre samples are a draft */
     for (int k = 0; k < 3; k++)
         slot[k] = row_buf + rt_pixel_row_bytes(o) + (size_t)k * 3u * w;
-    if (o->draft) {
+    if (RT_HAS_DRAFT && o->draft) {
         uint8_t *scratch = slot[2] + 3u * w;
         rt_draft_init(&draft, tr, wk, cf1, o, scratch);
         for (int k = 0; k < 3; k++)
@@ -162,7 +162,7 @@ rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
             int yy =
                 y + d < 0 ? 0 : (y + d >= o->height ? o->height - 1 : y + d);
             unsigned k = (unsigned)yy % 3u; /* yy >= 0: o->height >= 1 */
-            if (slot_y[k] != yy && o->draft) {
+            if (slot_y[k] != yy && RT_HAS_DRAFT && o->draft) {
                 rt_draft_row(&draft, (unsigned)yy, slot[k], flags[k]);
             } else if (slot_y[k] != yy) {
                 row_setup(&rs, tr, cf1, o, (unsigned)yy);
@@ -192,7 +192,8 @@ rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
             uint8_t rgb8[3] = { c[0], c[1], c[2] };
             if (contrast > o->adaptive)
                 pixel(tr, wk, cfn, &rs, o, x, rgb8);
-            else if (RT_STATS && wk->stats && o->draft &&
+            else if (RT_STATS && RT_HAS_DRAFT && wk->stats &&
+                     o->draft &&
                      ((flags[(unsigned)y % 3u][x / 8] >> (x % 8)) & 1u))
                 wk->stats->interpolated++;
             rt_put_pixel(row_buf, o, x, (unsigned)y, rgb8);
