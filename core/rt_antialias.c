@@ -138,12 +138,13 @@ void rt_aa_row(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
      * walked (rt_cam_walk), not each made afresh. */
     if ((RT_HAS_SUPERSAMPLING ? cf->n : 1) == 1) {
         const int32_t w = (int32_t)o->width;
-        const int32_t lo = rs.lo, hi = rs.hi < w ? rs.hi : w - 1;
+        const int32_t lo = rs.lo > 0 ? rs.lo : 0;
+        const int32_t hi = rs.hi < w ? rs.hi : w - 1;
         const uint8_t small = (uint8_t)fx_v3_small(tr->scene->cam.eye);
-        rt_cam_walk cw;
-        if (lo >= 0 && lo <= hi)
-            rt_cam_walk_init(&cw, cf, &rs.base[0], o->width, (unsigned)lo,
-                             (unsigned)hi);
+        rt_cam_walk cw; /* set up even for a row that hits nothing */
+        rt_cam_walk_init(&cw, cf, &rs.base[0], o->width,
+                         lo <= hi ? (unsigned)lo : 0u,
+                         lo <= hi ? (unsigned)hi : 0u);
         for (int32_t x = 0; x < w; x++) {
             rt_rgb c = tr->scene->background;
             if (x >= lo && x <= hi) {
