@@ -113,11 +113,53 @@ static void pixel(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
             fx_to_u8((fx_t)(spp <= 1 ? sum[k] : (sum[k] + spp / 2) / spp));
 }
 
+/* sample() for the direction at cw's column, from the eye, whose
+ * fx_v3_small the caller found once (rt_ray_set's fields). */
+RT_NOINLINE static rt_rgb walk_sample(const rt_tracer *tr, rt_work *wk,
+                                      const row_spans *rs,
+                                      const rt_cam_walk *cw, uint8_t small,
+                                      unsigned x)
+{
+    rt_ray r;
+    r.o = tr->scene->cam.eye;
+    r.d = rt_cam_walk_dir(cw);
+    r.e = fx_d3_unit_err(r.d);
+    r.small = small;
+    RT_COUNT(wk, primary);
+    return rt_trace_camera(tr, wk, &r, &rs->hit, x);
+}
+
 void rt_aa_row(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
                const rt_options *o, unsigned y, uint8_t *row)
 {
     row_spans rs;
     row_setup(&rs, tr, cf, o, y);
+    /* One sample per pixel: the camera rays of the columns lo..hi are
+     * walked (rt_cam_walk), not each made afresh. */
+    if ((RT_HAS_SUPERSAMPLING ? cf->n : 1) == 1) {
+        const int32_t w = (int32_t)o->width;
+        const int32_t lo = rs.lo > 0 ? rs.lo : 0;
+        const int32_t hi = rs.hi < w ? rs.hi : w - 1;
+        const uint8_t small = (uint8_t)fx_v3_small(tr->scene->cam.eye);
+        rt_cam_walk cw; /* set up even for a row that hits nothing */
+        rt_cam_walk_init(&cw, cf, &rs.base[0], o->width,
+                         lo <= hi ? (unsigned)lo : 0u,
+                         lo <= hi ? (unsigned)hi : 0u);
+        for (int32_t x = 0; x < w; x++) {
+            rt_rgb c = tr->scene->background;
+            if (x >= lo && x <= hi) {
+                if (x > lo)
+                    rt_cam_walk_step(&cw);
+                c = walk_sample(tr, wk, &rs, &cw, small, (unsigned)x);
+            } else if (RT_STATS && wk->stats) {
+                wk->stats->primary++;
+            }
+            const uint8_t rgb8[3] = { fx_to_u8(c.r), fx_to_u8(c.g),
+                                      fx_to_u8(c.b) }; /* as pixel() */
+            rt_put_pixel(row, o, (unsigned)x, y, rgb8);
+        }
+        return;
+    }
     for (unsigned x = 0; x < o->width; x++) {
         uint8_t rgb8[3];
         pixel(tr, wk, cf, &rs, o, x, rgb8);
@@ -148,7 +190,7 @@ rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
     rt_draft draft; /* with o->draft: the centre samples are a draft */
     for (int k = 0; k < 3; k++)
         slot[k] = row_buf + rt_pixel_row_bytes(o) + (size_t)k * 3u * w;
-    if (o->draft) {
+    if (RT_HAS_DRAFT && o->draft) {
         uint8_t *scratch = slot[2] + 3u * w;
         rt_draft_init(&draft, tr, wk, cf1, o, scratch);
         for (int k = 0; k < 3; k++)
@@ -162,7 +204,7 @@ rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
             int yy =
                 y + d < 0 ? 0 : (y + d >= o->height ? o->height - 1 : y + d);
             unsigned k = (unsigned)yy % 3u; /* yy >= 0: o->height >= 1 */
-            if (slot_y[k] != yy && o->draft) {
+            if (slot_y[k] != yy && RT_HAS_DRAFT && o->draft) {
                 rt_draft_row(&draft, (unsigned)yy, slot[k], flags[k]);
             } else if (slot_y[k] != yy) {
                 row_setup(&rs, tr, cf1, o, (unsigned)yy);
@@ -192,7 +234,8 @@ rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
             uint8_t rgb8[3] = { c[0], c[1], c[2] };
             if (contrast > o->adaptive)
                 pixel(tr, wk, cfn, &rs, o, x, rgb8);
-            else if (RT_STATS && wk->stats && o->draft &&
+            else if (RT_STATS && RT_HAS_DRAFT && wk->stats &&
+                     o->draft &&
                      ((flags[(unsigned)y % 3u][x / 8] >> (x % 8)) & 1u))
                 wk->stats->interpolated++;
             rt_put_pixel(row_buf, o, x, (unsigned)y, rgb8);

@@ -23,3 +23,50 @@ void rt_cam_setup(rt_cam_frame *cf, const rt_scene *s, unsigned width,
     int fb = most ? fx_clz64(most) - 1 : 30; /* 63 - bit length */
     cf->fbits = fb > 30 ? 30 : (fb < 2 ? 2 : fb);
 }
+
+/* 1 if |v| stays below 2^(31 + fb): v >> fb fits 32 bits. */
+static int walk_fits(int64_t v, int fb)
+{
+    const int64_t lim = (int64_t)1 << (31 + fb);
+    return v > -lim && v < lim;
+}
+
+/* Once a row: compiled for size (RT_COLD). */
+RT_COLD void rt_cam_walk_init(rt_cam_walk *cw, const rt_cam_frame *cf,
+                              const rt_cam_ray *b, unsigned width,
+                              unsigned x0, unsigned x1)
+{
+    const int fb = cf->fbits, sh = 32 - fb;
+    const int64_t h = (int64_t)1 << (fb - 1), up = (int64_t)1 << sh;
+    const int32_t k0 = rt_cam_col_k(width, 1, x0, 0);
+    const int32_t k1 = rt_cam_col_k(width, 1, x1, 0);
+    const int32_t s0 = rt_cam_soff(cf, k0), s1 = rt_cam_soff(cf, k1);
+    /* sx's step, dd or dd + 1, is below 2^31 for two columns or more
+     * (every sx fits 31 bits); with one there is no step. */
+    const int64_t dd = (2 * cf->step) >> sh;
+    const int32_t d = (int32_t)(x1 > x0 ? dd : 0);
+    const int64_t bv[3] = { b->x, b->y, b->z };
+    const int32_t rv[3] = { cf->right.x, cf->right.y, cf->right.z };
+    int64_t v[3], inc[2][3];
+    int fits = 1;
+    cw->mod = (uint32_t)1 << sh;
+    cw->frac = (uint32_t)(2 * cf->step) & (cw->mod - 1u);
+    cw->rem = (uint32_t)((int64_t)k0 * cf->step + (up >> 1)) & (cw->mod - 1u);
+    for (int c = 0; c < 3; c++) {
+        /* sx is monotonic along the row: the ends bound every v. */
+        const int64_t v1 = bv[c] + fx_imul64(rv[c], s1) + h;
+        v[c] = bv[c] + fx_imul64(rv[c], s0) + h;
+        inc[0][c] = fx_imul64(rv[c], d);
+        inc[1][c] = inc[0][c] + rv[c];
+        fits &= walk_fits(v[c], fb) & walk_fits(v1, fb) &
+                walk_fits(inc[0][c], fb) & walk_fits(inc[1][c], fb);
+    }
+    cw->wide = !fits;
+    cw->fbits = fb;
+    for (int c = 0; c < 3; c++) {
+        const int64_t m = fits ? up : 1;
+        cw->v[c] = v[c] * m;
+        cw->inc[0][c] = inc[0][c] * m;
+        cw->inc[1][c] = inc[1][c] * m;
+    }
+}

@@ -85,4 +85,52 @@ static inline fx_dir3 rt_cam_dir(const rt_cam_frame *cf, const rt_cam_ray *b,
                              (b->z + fx_imul64(cf->right.z, sx) + h) >> fb);
 }
 
+/* The directions of one sample row at one sample per pixel, column by
+ * column, by additions: the same bits as rt_cam_dir(cf, b,
+ * rt_cam_soff(cf, k)) for k = rt_cam_col_k(width, 1, x, 0). Why: that
+ * costs a 64-bit multiply for the offset and, per component, a
+ * multiply-add and a variable 64-bit shift, at every pixel. Along a row
+ * k steps by 2, so the offset sx steps by d or d + 1 (the remainder of
+ * its rounding says which), and each exact sum v = b + right sx + h by
+ * right d or right (d + 1). v is kept times 2^(32 - fbits) where that
+ * fits (views narrower than about 120 degrees): its high word is then
+ * v >> fbits; else (wide) as it is. */
+typedef struct {
+    int64_t v[3];      /* v, times 2^(32 - fbits) unless wide */
+    int64_t inc[2][3]; /* its steps: right d and right (d + 1), the same */
+    uint32_t rem;      /* (k step + 2^(sh-1)) mod 2^sh, sh = 32 - fbits */
+    uint32_t frac;     /* (2 step) mod 2^sh */
+    uint32_t mod;      /* 2^sh */
+    int wide;          /* v is not scaled: shift it by fbits */
+    int fbits;
+} rt_cam_walk;
+
+/* Sets *cw at column x0 of the sample row whose base is b, for the
+ * columns x0..x1 (x0 <= x1 < width) of an image width wide at cf->n = 1. */
+void rt_cam_walk_init(rt_cam_walk *cw, const rt_cam_frame *cf,
+                      const rt_cam_ray *b, unsigned width, unsigned x0,
+                      unsigned x1);
+
+/* Moves *cw one column right (never past the x1 it was set up for). */
+static inline void rt_cam_walk_step(rt_cam_walk *cw)
+{
+    cw->rem += cw->frac;
+    const unsigned carry = cw->rem >= cw->mod;
+    if (carry)
+        cw->rem -= cw->mod;
+    cw->v[0] += cw->inc[carry][0];
+    cw->v[1] += cw->inc[carry][1];
+    cw->v[2] += cw->inc[carry][2];
+}
+
+/* The unit direction at *cw's column: rt_cam_dir's. */
+static inline fx_dir3 rt_cam_walk_dir(const rt_cam_walk *cw)
+{
+    const int fb = cw->fbits;
+    if (!cw->wide)
+        return fx_d3_normalize64(cw->v[0] >> 32, cw->v[1] >> 32,
+                                 cw->v[2] >> 32);
+    return fx_d3_normalize64(cw->v[0] >> fb, cw->v[1] >> fb, cw->v[2] >> fb);
+}
+
 #endif /* RT_CAMERA_H */

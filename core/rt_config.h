@@ -202,6 +202,17 @@
 #define RT_HAS_SUPERSAMPLING 1 /* spp > 1 and adaptive anti-aliasing */
 #endif
 
+/* Draft renders (rt_draft.h, rt_options.draft): not a scene's effect but
+ * a render option, so not in RT_FEATURE_LIST. -DRT_NO_DRAFT (make firmware
+ * with DRAFT=0, which never asks for one) links of rt_draft.c and
+ * rt_thin.c only an empty rt_draft_sign_hit; rt_render_rows then refuses
+ * o->draft with RT_ERR_UNSUPPORTED. */
+#ifdef RT_NO_DRAFT
+#define RT_HAS_DRAFT 0
+#else
+#define RT_HAS_DRAFT 1 /* draft renders */
+#endif
+
 #ifdef RT_NO_SPHERE
 #define RT_HAS_SPHERE 0
 #else

@@ -146,7 +146,10 @@ void rt_draft_sign_hit(rt_work *wk, const rt_scene *s, unsigned oi,
     const rt_object *o = &s->obj[oi];
     const rt_material *m = &s->mat[o->material];
     uint32_t h = wk->sig * 31u + oi + 1u;
-    if (w <= wk->sign_w)
+    /* Without drafts (RT_NO_DRAFT) this is empty, all of rt_draft.c and
+     * rt_thin.c that is linked: rt_shade.c's call stays (its guard there
+     * cost the M3 up to 28 instructions per pixel in register spills). */
+    if (!RT_HAS_DRAFT || w <= wk->sign_w)
         return;
     if (RT_HAS_TEXTURES && m->texture != RT_TEX_NONE) {
         /* The cell (as rt_texel finds it, but at the hit itself), not

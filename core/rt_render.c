@@ -31,7 +31,7 @@ size_t rt_buffer_bytes(const rt_options *o)
     size_t extra = 0;
     if (RT_HAS_SUPERSAMPLING && o->adaptive && o->spp > 1)
         extra = 9u * o->width; /* three rows of 1-spp colours */
-    if (o->draft)
+    if (RT_HAS_DRAFT && o->draft)
         extra += rt_draft_bytes(o);
     return rt_row_bytes(o) + extra;
 }
@@ -95,7 +95,8 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
      * through them. */
     if (!s || !o || !scene_in_range(s))
         return RT_ERR_ARG;
-    if (rt_scene_features(s, o->spp) & ~rt_build_features())
+    if ((rt_scene_features(s, o->spp) & ~rt_build_features()) ||
+        (!RT_HAS_DRAFT && o->draft))
         return RT_ERR_UNSUPPORTED;
     unsigned n = grid_side(o->spp);
     if (!row_buf || !fn || n == 0 || o->width < 1 ||
@@ -113,7 +114,7 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
     rt_cam_setup(&cf, s, o->width, o->height, n);
     if (RT_HAS_SUPERSAMPLING && o->adaptive && n > 1)
         return rt_aa_adaptive(&tr, &wk, &cf, o, y0, y1, row_buf, fn, ctx);
-    if (o->draft)
+    if (RT_HAS_DRAFT && o->draft)
         return rt_draft_render(&tr, &wk, &cf, o, y0, y1, row_buf, fn, ctx);
     for (int y = y0; y < y1; y++) {
         rt_aa_row(&tr, &wk, &cf, o, (unsigned)y, row_buf);

@@ -116,8 +116,12 @@ fw_cap_limit = $(lastword $(patsubst -D$1=%,%,$(filter -D$1=%,$(FW_CAPS) \
     $(FW_DEFS))))
 
 FW_EFFECTS := $(FW_BUILD)/fw_effects.h
+# DRAFT=0 (the default): main.c never asks for a draft render, so the core
+# is built without draft renders (RT_NO_DRAFT, core/rt_config.h) and links
+# neither rt_draft.c nor rt_thin.c, with PRUNE=0 as with PRUNE=1.
+FW_DRAFT_OPT := $(if $(filter 0,$(DRAFT)),-DRT_NO_DRAFT)
 FW_CFLAGS := -std=c99 $(FW_OPT) -g $(FW_CPU) -ffreestanding \
-    -ffunction-sections -fdata-sections -DRT_STATS=0 \
+    -ffunction-sections -fdata-sections -DRT_STATS=0 $(FW_DRAFT_OPT) \
     $(call fw_scene_caps_out,$(FW_CAPS)) -include $(FW_EFFECTS) \
     $(call fw_scene_caps_out,$(FW_DEFS))
 FW_LDFLAGS := $(FW_CPU) -nostdlib -T $(FW_LD) -Wl,--gc-sections \

@@ -6,6 +6,8 @@
 #   `fixtrace --build-flags` derives renders the very same bytes as the full
 #   build;
 # - a pruned build refuses a scene that needs a removed effect, clearly;
+# - a build without draft renders (-DRT_NO_DRAFT) renders the same bytes
+#   and refuses --draft;
 # - the core compiles warning-free in every configuration of the removal
 #   flags a build can get (below), for the host and for the boards.
 set -u
@@ -69,6 +71,23 @@ if [ -x build/pruned/diffuse/fixtrace ]; then
         bad "a build without supersampling accepted -s 4: $(cat "$tmp/err")"
 fi
 
+# Without draft renders (-DRT_NO_DRAFT, as make firmware builds with
+# DRAFT=0): the same bytes, and --draft refused.
+build=build/pruned/nodraft
+if $MAKE -s HOST_BUILD="$build" RT_DEFS=-DRT_NO_DRAFT "$build/fixtrace" \
+        >"$tmp/build.log" 2>&1; then
+    "$build/fixtrace" -q -W 64 -H 48 -o "$tmp/nd.ppm" scenes/seed.scene &&
+        cmp -s "$tmp/seed.ppm" "$tmp/nd.ppm" && ok ||
+        bad "the build with -DRT_NO_DRAFT renders the seed differently"
+    "$build/fixtrace" -q --draft 64 -W 8 -H 8 -o "$tmp/d.ppm" \
+        scenes/seed.scene 2>"$tmp/err"
+    rc=$?
+    [ $rc -ne 0 ] && [ ! -s "$tmp/d.ppm" ] && ok ||
+        bad "a build without drafts drew a draft (status $rc: $(cat "$tmp/err"))"
+else
+    bad "the build with -DRT_NO_DRAFT failed: $(tail -5 "$tmp/build.log")"
+fi
+
 # Every configuration compiles with -Werror: nothing removed, everything
 # removed, each flag alone, and each shape kept alone, with every effect
 # and with none (a firmware for a scene of one shape). A static helper
@@ -92,11 +111,13 @@ for n in $names; do
     fi
 done
 no() { local n out=""; for n in "$@"; do out="$out -DRT_NO_$n"; done; echo $out; }
-configs=("" "$(no $names)")
+# DRAFT is no scene's effect but a render option (RT_NO_DRAFT, which make
+# firmware gives with DRAFT=0): alone, and with everything removed.
+configs=("" "$(no $names)" "$(no $names DRAFT)" "-DRT_NO_DRAFT")
 for n in $names; do configs+=("-DRT_NO_$n"); done
 for s in $shapes; do
     others=$(echo $shapes | tr ' ' '\n' | grep -vx "$s" | tr '\n' ' ')
-    configs+=("$(no $others)" "$(no $others $effects)")
+    configs+=("$(no $others)" "$(no $others $effects DRAFT)")
 done
 [ "$(echo $shapes | wc -w)" -ge 5 ] && [ "$(echo $effects | wc -w)" -ge 8 ] &&
     ok || bad "feature list: shapes '$shapes', effects '$effects'"
@@ -116,8 +137,10 @@ for b in $boards; do
         continue
     fi
     # PRUNE=0: the board's capacities as -D options; the configuration
-    # takes the place of the generated fw_effects.h.
-    fl=$($MAKE -s --no-print-directory print-FW_CFLAGS BOARD="$b" PRUNE=0 |
+    # takes the place of the generated fw_effects.h. DRAFT=1: draft
+    # renders kept (RT_NO_DRAFT comes with the configuration).
+    fl=$($MAKE -s --no-print-directory print-FW_CFLAGS BOARD="$b" PRUNE=0 \
+        DRAFT=1 |
         sed 's/^[^=]*=//; s/-include [^ ]*//; s/ -g / /')
     compilers+=("$b|$cc $fl $core_warn")
 done

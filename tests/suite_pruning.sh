@@ -16,6 +16,8 @@
 #   naming the limit;
 # - a firmware with an effect removed by hand refuses the seed scene with
 #   a message naming the effect and exit status 4, and sends no image;
+# - a firmware built with DRAFT=0 (the default), pruned or full, links no
+#   draft render code; one with DRAFT=64 does;
 # - the host tool that parses the scene is built with the settings of
 #   FW_DEFS and FW_CAPS that change the parsed scene (RT_MAX_DEPTH,
 #   RT_UNIT_BITS) and with the light limit the depth must fit
@@ -89,6 +91,7 @@ done
   echo $? >"$tmp/refuse.rc" ) &
 ( "$MK" -s minimal BOARD=an385 WIDTH=$W HEIGHT=$H >"$tmp/minimal.log" 2>&1
   echo $? >"$tmp/minimal.rc" ) &
+( fw draft firmware SCENE=$SEED DRAFT=64; echo $? >"$tmp/draft.rc" ) &
 wait
 fw caps firmware SCENE=$DIFFUSE PRUNE=1 FW_DEFS=-DRT_MAX_OBJECTS=3 &&
     bad "diffuse (4 objects) built with RT_MAX_OBJECTS=3 as its limit" ||
@@ -150,6 +153,24 @@ fi
 syms pruned | grep -qE '^rt_mesh_' &&
     bad "the pruned firmware links the mesh code:" \
         "$(syms pruned | grep -E '^rt_mesh_' | tr '\n' ' ')" || ok
+# DRAFT=0 (the default), pruned or not: no draft render code
+# (core/rt_draft.c, rt_thin.c; RT_NO_DRAFT) but rt_draft_sign_hit, which
+# rt_shade.c still calls and which is then empty (at most 4 bytes). Their
+# static functions are reached only through these, so the names tell. A
+# DRAFT=64 firmware links them.
+draft_code() {
+    arm-none-eabi-nm -S "$B/$1/fixtrace.elf" |
+        awk '$NF ~ /^rt_(draft|thin)_/ && !($NF == "rt_draft_sign_hit" &&
+             NF == 4 && $2 ~ /^0+[0-4]$/) { print $NF }' | tr '\n' ' '
+}
+for v in pruned full; do
+    [ -f "$B/$v/fixtrace.elf" ] && [ -z "$(draft_code $v)" ] && ok ||
+        bad "the $v firmware with DRAFT=0 links draft code: $(draft_code $v)"
+done
+[ "$(cat "$tmp/draft.rc")" = 0 ] &&
+    draft_code draft | grep -q 'rt_draft_render .*rt_thin_' && ok ||
+    bad "the DRAFT=64 firmware: status $(cat "$tmp/draft.rc"), draft code" \
+        "'$(draft_code draft)' $(tail -n 3 "$tmp/draft.log")"
 # rt_parse is linked as rt_parse_cfg_o<N>_m<N>_l<N> (core/rt_scene.h).
 syms full | grep -qE '^rt_parse(_cfg_[a-z0-9_]+)?$' &&
     syms full | grep -qx fw_scene_text && ok ||
