@@ -3,12 +3,23 @@
 #include "fx_dir.h"
 #include "fx_rsqrt.h"
 
+/* a_i 2^j R / 2^(62 - FX_UBITS) rounded to nearest (ties up), for b =
+ * a_i 2^(j-1) (j >= 1): the same quotient with a constant shift, which
+ * is a few instructions where a variable 64-bit one is a dozen (#17). */
+static inline int32_t unit_c(int32_t b, int32_t r)
+{
+    return (int32_t)((fx_imul64(b, r) + ((int64_t)1 << (60 - FX_UBITS))) >>
+                     (61 - FX_UBITS));
+}
+
 /* Unit vector along the 32-bit vector a, from its exact squared length. */
 static fx_dir3 norm32(int32_t ax, int32_t ay, int32_t az)
 {
     uint64_t len2 = (uint64_t)(fx_imul64(ax, ax)) +
                     (uint64_t)(fx_imul64(ay, ay)) +
                     (uint64_t)(fx_imul64(az, az)); /* <= 3 * 2^62 */
+    uint32_t hi = (uint32_t)(len2 >> 32), lo = (uint32_t)len2, m;
+    int j, z;
     if (len2 == 0)
         return fx_d3(0, 0, 0);
     /* Along an axis the answer is exact: +-1 there, as box and quad
@@ -18,21 +29,34 @@ static fx_dir3 norm32(int32_t ax, int32_t ay, int32_t az)
                      ay > 0 ? FX_UONE : (ay < 0 ? -FX_UONE : 0),
                      az > 0 ? FX_UONE : (az < 0 ? -FX_UONE : 0));
     /* Scale |a|^2 by 4^j into X in [2^62, 2^64) and keep its top word m,
-     * in [2^30, 2^32). Then a_i / |a| = a_i 2^j / sqrt(X). */
-    int j = fx_clz64(len2) >> 1;
-    uint32_t m = (uint32_t)((len2 << (2 * j)) >> 32);
+     * in [2^30, 2^32). Then a_i / |a| = a_i 2^j / sqrt(X). Word by word,
+     * as a 64-bit variable shift costs more on 32-bit cores. */
+    if (hi != 0) {
+        z = fx_clz32(hi) & ~1;
+        m = z ? (hi << z) | (lo >> (32 - z)) : hi;
+    } else {
+        z = 32 + (fx_clz32(lo) & ~1);
+        m = lo << (z - 32);
+    }
+    j = z >> 1;
     /* R ~ 2^46 / sqrt(m): low by at most about 2^-30 (fx_rsqrt_q30). The
      * word m drops raises 1 / sqrt(m) above 2^16 / sqrt(X) by at most
      * 2^-31; taking one off R (at least 2^-31 of it) keeps R below the
      * truth, so no component rounds past 1. The error stays within
-     * 2^-29: two ulps at 30 bits. */
-    uint32_t r = fx_rsqrt_q30(m, fx_rsqrt_q29(m)) - 1u;
-    /* a_i 2^j / sqrt(X) = a_i R 2^j / 2^62; s >= 1 as j <= 31. */
-    const int s = 62 - j - FX_UBITS;
-    const int64_t half = (int64_t)1 << (s - 1);
-    return fx_d3((int32_t)((fx_iumul64(ax, r) + half) >> s),
-                 (int32_t)((fx_iumul64(ay, r) + half) >> s),
-                 (int32_t)((fx_iumul64(az, r) + half) >> s));
+     * 2^-29: two ulps at 30 bits. R < 2^31, so it is an int32. */
+    const int32_t r = (int32_t)(fx_rsqrt_q30(m, fx_rsqrt_q29(m)) - 1u);
+    /* a_i 2^j / sqrt(X) = a_i R 2^j / 2^62. With j >= 1, a_i 2^(j-1)
+     * fits int32, as |a_i| 2^j <= sqrt(X) < 2^32. */
+    if (j == 0) {
+        const int s = 62 - FX_UBITS;
+        const int64_t half = (int64_t)1 << (s - 1);
+        return fx_d3((int32_t)((fx_imul64(ax, r) + half) >> s),
+                     (int32_t)((fx_imul64(ay, r) + half) >> s),
+                     (int32_t)((fx_imul64(az, r) + half) >> s));
+    }
+    return fx_d3(unit_c((int32_t)((uint32_t)ax << (j - 1)), r),
+                 unit_c((int32_t)((uint32_t)ay << (j - 1)), r),
+                 unit_c((int32_t)((uint32_t)az << (j - 1)), r));
 }
 
 fx_dir3 fx_d3_normalize(fx_vec3 v)
