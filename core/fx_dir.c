@@ -64,24 +64,40 @@ fx_dir3 fx_d3_normalize(fx_vec3 v)
     return norm32(v.x, v.y, v.z);
 }
 
-/* v / 2^k rounded to nearest, kept within 31 bits. */
-static int32_t shrink(int64_t v, int k)
+/* 1 if |v| <= INT32_MAX: v is an int32 other than INT32_MIN. */
+static inline int fits31(int64_t v)
 {
-    int64_t r = (v + ((int64_t)1 << (k - 1))) >> k;
-    return r > INT32_MAX ? INT32_MAX : (int32_t)r;
+    return v == (int32_t)v && (int32_t)v != INT32_MIN;
+}
+
+/* v / 2^(sh+1) rounded to nearest (ties up), kept within 31 bits, for
+ * |v| < 2^(32+sh), 0 <= sh <= 32. With t = floor(v / 2^sh), in [-2^32,
+ * 2^32), that is floor((t + 1) / 2); t is the sign of v above its low
+ * word tl, so the result is u = floor((tl + 1) / 2) <= 2^31, less 2^31
+ * when v < 0. Only 32-bit shifts: a variable 64-bit one costs a dozen
+ * instructions on the M3 and a library call on the M0 (#17). */
+static int32_t shrink(int64_t v, int sh)
+{
+    uint32_t lo = (uint32_t)v, hi = (uint32_t)((uint64_t)v >> 32);
+    uint32_t tl = sh ? ((lo >> 1) >> (sh - 1)) | (hi << (32 - sh)) : lo;
+    uint32_t u = (tl >> 1) + (tl & 1u);
+    if (hi >> 31)
+        return (int32_t)(u - 0x80000000u); /* in [-2^31, 0] */
+    return u > (uint32_t)INT32_MAX ? INT32_MAX : (int32_t)u;
 }
 
 fx_dir3 fx_d3_normalize64(int64_t x, int64_t y, int64_t z)
 {
+    if (fits31(x) && fits31(y) && fits31(z))
+        return norm32((int32_t)x, (int32_t)y, (int32_t)z);
     uint64_t ux = x < 0 ? 0u - (uint64_t)x : (uint64_t)x;
     uint64_t uy = y < 0 ? 0u - (uint64_t)y : (uint64_t)y;
     uint64_t uz = z < 0 ? 0u - (uint64_t)z : (uint64_t)z;
-    uint64_t any = ux | uy | uz;
-    if (any <= (uint64_t)INT32_MAX)
-        return norm32((int32_t)x, (int32_t)y, (int32_t)z);
-    /* Keep 31 bits of the largest component. */
-    int k = 33 - fx_clz64(any);
-    return norm32(shrink(x, k), shrink(y, k), shrink(z, k));
+    uint32_t top = (uint32_t)((ux | uy | uz) >> 32);
+    /* Keep 31 bits of the largest component: a shift by k = 33 - its
+     * bit length beyond 2^32, so sh = k - 1; k = 1 below 2^32. */
+    int sh = top ? 32 - fx_clz32(top) : 0;
+    return norm32(shrink(x, sh), shrink(y, sh), shrink(z, sh));
 }
 
 fx_dir3 fx_d3_cross_unit(fx_vec3 a, fx_vec3 b)
