@@ -20,14 +20,18 @@ static fx_dir3 norm32(int32_t ax, int32_t ay, int32_t az)
                     (uint64_t)(fx_imul64(az, az)); /* <= 3 * 2^62 */
     uint32_t hi = (uint32_t)(len2 >> 32), lo = (uint32_t)len2, m;
     int j, z;
-    if (len2 == 0)
-        return fx_d3(0, 0, 0);
     /* Along an axis the answer is exact: +-1 there, as box and quad
-     * normals and the planes they are tested against rely on. */
-    if ((ax == 0) + (ay == 0) + (az == 0) == 2)
-        return fx_d3(ax > 0 ? FX_UONE : (ax < 0 ? -FX_UONE : 0),
-                     ay > 0 ? FX_UONE : (ay < 0 ? -FX_UONE : 0),
-                     az > 0 ? FX_UONE : (az < 0 ? -FX_UONE : 0));
+     * normals and the planes they are tested against rely on. Both
+     * that and the zero vector have a zero component, which most
+     * vectors have not: one test of each on the way. */
+    if (ax == 0 || ay == 0 || az == 0) {
+        if (len2 == 0)
+            return fx_d3(0, 0, 0);
+        if ((ax == 0) + (ay == 0) + (az == 0) == 2)
+            return fx_d3(ax > 0 ? FX_UONE : (ax < 0 ? -FX_UONE : 0),
+                         ay > 0 ? FX_UONE : (ay < 0 ? -FX_UONE : 0),
+                         az > 0 ? FX_UONE : (az < 0 ? -FX_UONE : 0));
+    }
     /* Scale |a|^2 by 4^j into X in [2^62, 2^64) and keep its top word m,
      * in [2^30, 2^32). Then a_i / |a| = a_i 2^j / sqrt(X). Word by word,
      * as a 64-bit variable shift costs more on 32-bit cores. */
