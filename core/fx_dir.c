@@ -37,7 +37,7 @@ static fx_dir3 norm32(int32_t ax, int32_t ay, int32_t az)
      * as a 64-bit variable shift costs more on 32-bit cores. */
     if (hi != 0) {
         z = fx_clz32(hi) & ~1;
-        m = z ? (hi << z) | (lo >> (32 - z)) : hi;
+        m = (hi << z) | ((lo >> 1) >> (31 - z)); /* no branch on z */
     } else {
         z = 32 + (fx_clz32(lo) & ~1);
         m = lo << (z - 32);

@@ -36,8 +36,10 @@ static inline uint32_t fx_rsqrt_q30(uint32_t m, int32_t r)
     /* m r^2 / 2^32, low by at most 2: at most 2^58 since r is low. */
     uint64_t p = fx_umul64(m, (uint32_t)(r2 >> 32)) +
                  (fx_umul64(m, (uint32_t)r2) >> 32);
-    uint64_t e = ((uint64_t)1 << 58) - p; /* e * 2^58, below 2^39 */
-    return 2 * ur + (uint32_t)(fx_umul64(ur, (uint32_t)(e >> 8)) >> 50);
+    /* e * 2^58 = 2^58 - p, below 2^39: its bits 8..39 are those of -p,
+     * as 2^58 only changes bit 58 and up (one constant less, #17). */
+    uint32_t e8 = (uint32_t)((0u - p) >> 8);
+    return 2 * ur + (uint32_t)(fx_umul64(ur, e8) >> 50);
 }
 
 #endif /* FX_RSQRT_H */
