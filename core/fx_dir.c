@@ -8,16 +8,53 @@
  * is a few instructions where a variable 64-bit one is a dozen (#17). */
 static inline int32_t unit_c(int32_t b, int32_t r)
 {
+    /* Without a 32x32->64 multiply (FX_SOFT_MUL64), from 16-bit halves
+     * b = bh 2^16 + bl, r = rh 2^16 + rl: with K = 45 - FX_UBITS <= 16,
+     * the quotient is bh rh 2^(16-K) + floor((S + U) / 2^K) for S = bh
+     * rl (an int32) and U = bl rh + floor(bl rl / 2^16) + 2^(44-FX_UBITS)
+     * (below 2^32), and floor((S + U) / 2^K) adds the quotients and the
+     * carry of the remainders. A third of the soft product's work. */
+    if (FX_SOFT_MUL64 && FX_UBITS >= 29) {
+        const int k = 45 - FX_UBITS;
+        const uint32_t mask = ((uint32_t)1 << k) - 1u;
+        const int32_t bh = b >> 16, rh = r >> 16;
+        const uint32_t bl = (uint32_t)b & 0xFFFFu, rl = (uint32_t)r & 0xFFFFu;
+        const int32_t sv = bh * (int32_t)rl;
+        const uint32_t uv = bl * (uint32_t)rh + ((bl * rl) >> 16) +
+                            ((uint32_t)1 << (44 - FX_UBITS));
+        const uint32_t c = (((uint32_t)sv & mask) + (uv & mask)) >> k;
+        return (int32_t)((uint32_t)(bh * rh) * ((uint32_t)1 << (16 - k)) +
+                         (uint32_t)(sv >> k) + (uv >> k) + c);
+    }
     return (int32_t)((fx_imul64(b, r) + ((int64_t)1 << (60 - FX_UBITS))) >>
                      (61 - FX_UBITS));
+}
+
+/* ax^2 + ay^2 + az^2, exact (at most 3 * 2^62), from the 16-bit halves
+ * of the magnitudes u = uh 2^16 + ul: u^2 = uh^2 2^32 + uh ul 2^17 +
+ * ul^2, each term summed on its own and joined once, where three soft
+ * products (FX_SOFT_MUL64) join three times (#17). uh^2 <= 2^30, uh ul
+ * < 2^31 and ul^2 < 2^32. */
+static inline uint64_t len2_soft(int32_t ax, int32_t ay, int32_t az)
+{
+    const uint32_t ux = ax < 0 ? 0u - (uint32_t)ax : (uint32_t)ax;
+    const uint32_t uy = ay < 0 ? 0u - (uint32_t)ay : (uint32_t)ay;
+    const uint32_t uz = az < 0 ? 0u - (uint32_t)az : (uint32_t)az;
+    const uint32_t xh = ux >> 16, xl = ux & 0xFFFFu, yh = uy >> 16;
+    const uint32_t yl = uy & 0xFFFFu, zh = uz >> 16, zl = uz & 0xFFFFu;
+    const uint32_t hh = xh * xh + yh * yh + zh * zh; /* <= 3 * 2^30 */
+    const uint64_t mid = (uint64_t)(xh * xl) + yh * yl + zh * zl;
+    const uint64_t ll = (uint64_t)(xl * xl) + yl * yl + zl * zl;
+    return ((uint64_t)hh << 32) + (mid << 17) + ll;
 }
 
 /* Unit vector along the 32-bit vector a, from its exact squared length. */
 static fx_dir3 norm32(int32_t ax, int32_t ay, int32_t az)
 {
-    uint64_t len2 = (uint64_t)(fx_imul64(ax, ax)) +
-                    (uint64_t)(fx_imul64(ay, ay)) +
-                    (uint64_t)(fx_imul64(az, az)); /* <= 3 * 2^62 */
+    uint64_t len2 = FX_SOFT_MUL64 ? len2_soft(ax, ay, az)
+                                  : (uint64_t)(fx_imul64(ax, ax)) +
+                                        (uint64_t)(fx_imul64(ay, ay)) +
+                                        (uint64_t)(fx_imul64(az, az));
     uint32_t hi = (uint32_t)(len2 >> 32), lo = (uint32_t)len2, m;
     int j, z;
     /* Along an axis the answer is exact: +-1 there, as box and quad
