@@ -26,6 +26,15 @@ static inline uint32_t fx_umulhi32(uint32_t a, uint32_t b)
     return ah * bh + (m1 >> 16) + (m2 >> 16) + (t >> 16);
 }
 
+/* floor(x rc / 2^31) for rc <= 2^16, exact, with 32-bit products only:
+ * x = xh 2^16 + xl gives floor((xh rc + floor(xl rc / 2^16)) / 2^15),
+ * and the sum stays below 2^32. A quotient x / d from rc ~ 2^31 / d,
+ * for cores without a divide instruction (#17). */
+static inline uint32_t fx_rcp_quot(uint32_t x, uint32_t rc)
+{
+    return ((x >> 16) * rc + (((x & 0xFFFFu) * rc) >> 16)) >> 15;
+}
+
 /* R ~ 2^45 / sqrt(m) for m in [2^30, 2^32), so R is in (2^29, 2^30].
  * Never above the truth, and at most 2^-20 below it (relative), as checked
  * over every m: the table seed r0, then with e = 1 - x r0^2 (x = m / 2^32)
