@@ -3,36 +3,101 @@
 #include "fx_dir.h"
 #include "fx_rsqrt.h"
 
+/* a_i 2^j R / 2^(62 - FX_UBITS) rounded to nearest (ties up), for b =
+ * a_i 2^(j-1) (j >= 1): the same quotient with a constant shift, which
+ * is a few instructions where a variable 64-bit one is a dozen (#17). */
+static inline int32_t unit_c(int32_t b, int32_t r)
+{
+    /* Without a 32x32->64 multiply (FX_SOFT_MUL64), from 16-bit halves
+     * b = bh 2^16 + bl, r = rh 2^16 + rl: with K = 45 - FX_UBITS <= 16,
+     * the quotient is bh rh 2^(16-K) + floor((S + U) / 2^K) for S = bh
+     * rl (an int32) and U = bl rh + floor(bl rl / 2^16) + 2^(44-FX_UBITS)
+     * (below 2^32), and floor((S + U) / 2^K) adds the quotients and the
+     * carry of the remainders. A third of the soft product's work. */
+    if (FX_SOFT_MUL64 && FX_UBITS >= 29) {
+        const int k = 45 - FX_UBITS;
+        const uint32_t mask = ((uint32_t)1 << k) - 1u;
+        const int32_t bh = b >> 16, rh = r >> 16;
+        const uint32_t bl = (uint32_t)b & 0xFFFFu, rl = (uint32_t)r & 0xFFFFu;
+        const int32_t sv = bh * (int32_t)rl;
+        const uint32_t uv = bl * (uint32_t)rh + ((bl * rl) >> 16) +
+                            ((uint32_t)1 << (44 - FX_UBITS));
+        const uint32_t c = (((uint32_t)sv & mask) + (uv & mask)) >> k;
+        return (int32_t)((uint32_t)(bh * rh) * ((uint32_t)1 << (16 - k)) +
+                         (uint32_t)(sv >> k) + (uv >> k) + c);
+    }
+    return (int32_t)((fx_imul64(b, r) + ((int64_t)1 << (60 - FX_UBITS))) >>
+                     (61 - FX_UBITS));
+}
+
+/* ax^2 + ay^2 + az^2, exact (at most 3 * 2^62), from the 16-bit halves
+ * of the magnitudes u = uh 2^16 + ul: u^2 = uh^2 2^32 + uh ul 2^17 +
+ * ul^2, each term summed on its own and joined once, where three soft
+ * products (FX_SOFT_MUL64) join three times (#17). uh^2 <= 2^30, uh ul
+ * < 2^31 and ul^2 < 2^32. */
+static inline uint64_t len2_soft(int32_t ax, int32_t ay, int32_t az)
+{
+    const uint32_t ux = ax < 0 ? 0u - (uint32_t)ax : (uint32_t)ax;
+    const uint32_t uy = ay < 0 ? 0u - (uint32_t)ay : (uint32_t)ay;
+    const uint32_t uz = az < 0 ? 0u - (uint32_t)az : (uint32_t)az;
+    const uint32_t xh = ux >> 16, xl = ux & 0xFFFFu, yh = uy >> 16;
+    const uint32_t yl = uy & 0xFFFFu, zh = uz >> 16, zl = uz & 0xFFFFu;
+    const uint32_t hh = xh * xh + yh * yh + zh * zh; /* <= 3 * 2^30 */
+    const uint64_t mid = (uint64_t)(xh * xl) + yh * yl + zh * zl;
+    const uint64_t ll = (uint64_t)(xl * xl) + yl * yl + zl * zl;
+    return ((uint64_t)hh << 32) + (mid << 17) + ll;
+}
+
 /* Unit vector along the 32-bit vector a, from its exact squared length. */
 static fx_dir3 norm32(int32_t ax, int32_t ay, int32_t az)
 {
-    uint64_t len2 = (uint64_t)(fx_imul64(ax, ax)) +
-                    (uint64_t)(fx_imul64(ay, ay)) +
-                    (uint64_t)(fx_imul64(az, az)); /* <= 3 * 2^62 */
-    if (len2 == 0)
-        return fx_d3(0, 0, 0);
+    uint64_t len2 = FX_SOFT_MUL64 ? len2_soft(ax, ay, az)
+                                  : (uint64_t)(fx_imul64(ax, ax)) +
+                                        (uint64_t)(fx_imul64(ay, ay)) +
+                                        (uint64_t)(fx_imul64(az, az));
+    uint32_t hi = (uint32_t)(len2 >> 32), lo = (uint32_t)len2, m;
+    int j, z;
     /* Along an axis the answer is exact: +-1 there, as box and quad
-     * normals and the planes they are tested against rely on. */
-    if ((ax == 0) + (ay == 0) + (az == 0) == 2)
-        return fx_d3(ax > 0 ? FX_UONE : (ax < 0 ? -FX_UONE : 0),
-                     ay > 0 ? FX_UONE : (ay < 0 ? -FX_UONE : 0),
-                     az > 0 ? FX_UONE : (az < 0 ? -FX_UONE : 0));
+     * normals and the planes they are tested against rely on. Both
+     * that and the zero vector have a zero component, which most
+     * vectors have not: one test of each on the way. */
+    if (ax == 0 || ay == 0 || az == 0) {
+        if (len2 == 0)
+            return fx_d3(0, 0, 0);
+        if ((ax == 0) + (ay == 0) + (az == 0) == 2)
+            return fx_d3(ax > 0 ? FX_UONE : (ax < 0 ? -FX_UONE : 0),
+                         ay > 0 ? FX_UONE : (ay < 0 ? -FX_UONE : 0),
+                         az > 0 ? FX_UONE : (az < 0 ? -FX_UONE : 0));
+    }
     /* Scale |a|^2 by 4^j into X in [2^62, 2^64) and keep its top word m,
-     * in [2^30, 2^32). Then a_i / |a| = a_i 2^j / sqrt(X). */
-    int j = fx_clz64(len2) >> 1;
-    uint32_t m = (uint32_t)((len2 << (2 * j)) >> 32);
+     * in [2^30, 2^32). Then a_i / |a| = a_i 2^j / sqrt(X). Word by word,
+     * as a 64-bit variable shift costs more on 32-bit cores. */
+    if (hi != 0) {
+        z = fx_clz32(hi) & ~1;
+        m = (hi << z) | ((lo >> 1) >> (31 - z)); /* no branch on z */
+    } else {
+        z = 32 + (fx_clz32(lo) & ~1);
+        m = lo << (z - 32);
+    }
+    j = z >> 1;
     /* R ~ 2^46 / sqrt(m): low by at most about 2^-30 (fx_rsqrt_q30). The
      * word m drops raises 1 / sqrt(m) above 2^16 / sqrt(X) by at most
      * 2^-31; taking one off R (at least 2^-31 of it) keeps R below the
      * truth, so no component rounds past 1. The error stays within
-     * 2^-29: two ulps at 30 bits. */
-    uint32_t r = fx_rsqrt_q30(m, fx_rsqrt_q29(m)) - 1u;
-    /* a_i 2^j / sqrt(X) = a_i R 2^j / 2^62; s >= 1 as j <= 31. */
-    const int s = 62 - j - FX_UBITS;
-    const int64_t half = (int64_t)1 << (s - 1);
-    return fx_d3((int32_t)((fx_iumul64(ax, r) + half) >> s),
-                 (int32_t)((fx_iumul64(ay, r) + half) >> s),
-                 (int32_t)((fx_iumul64(az, r) + half) >> s));
+     * 2^-29: two ulps at 30 bits. R < 2^31, so it is an int32. */
+    const int32_t r = (int32_t)(fx_rsqrt_q30(m, fx_rsqrt_q29(m)) - 1u);
+    /* a_i 2^j / sqrt(X) = a_i R 2^j / 2^62. With j >= 1, a_i 2^(j-1)
+     * fits int32, as |a_i| 2^j <= sqrt(X) < 2^32. */
+    if (j == 0) {
+        const int s = 62 - FX_UBITS;
+        const int64_t half = (int64_t)1 << (s - 1);
+        return fx_d3((int32_t)((fx_imul64(ax, r) + half) >> s),
+                     (int32_t)((fx_imul64(ay, r) + half) >> s),
+                     (int32_t)((fx_imul64(az, r) + half) >> s));
+    }
+    return fx_d3(unit_c((int32_t)((uint32_t)ax << (j - 1)), r),
+                 unit_c((int32_t)((uint32_t)ay << (j - 1)), r),
+                 unit_c((int32_t)((uint32_t)az << (j - 1)), r));
 }
 
 fx_dir3 fx_d3_normalize(fx_vec3 v)
@@ -40,24 +105,40 @@ fx_dir3 fx_d3_normalize(fx_vec3 v)
     return norm32(v.x, v.y, v.z);
 }
 
-/* v / 2^k rounded to nearest, kept within 31 bits. */
-static int32_t shrink(int64_t v, int k)
+/* 1 if |v| <= INT32_MAX: v is an int32 other than INT32_MIN. */
+static inline int fits31(int64_t v)
 {
-    int64_t r = (v + ((int64_t)1 << (k - 1))) >> k;
-    return r > INT32_MAX ? INT32_MAX : (int32_t)r;
+    return v == (int32_t)v && (int32_t)v != INT32_MIN;
+}
+
+/* v / 2^(sh+1) rounded to nearest (ties up), kept within 31 bits, for
+ * |v| < 2^(32+sh), 0 <= sh <= 32. With t = floor(v / 2^sh), in [-2^32,
+ * 2^32), that is floor((t + 1) / 2); t is the sign of v above its low
+ * word tl, so the result is u = floor((tl + 1) / 2) <= 2^31, less 2^31
+ * when v < 0. Only 32-bit shifts: a variable 64-bit one costs a dozen
+ * instructions on the M3 and a library call on the M0 (#17). */
+static int32_t shrink(int64_t v, int sh)
+{
+    uint32_t lo = (uint32_t)v, hi = (uint32_t)((uint64_t)v >> 32);
+    uint32_t tl = sh ? ((lo >> 1) >> (sh - 1)) | (hi << (32 - sh)) : lo;
+    uint32_t u = (tl >> 1) + (tl & 1u);
+    if (hi >> 31)
+        return (int32_t)(u - 0x80000000u); /* in [-2^31, 0] */
+    return u > (uint32_t)INT32_MAX ? INT32_MAX : (int32_t)u;
 }
 
 fx_dir3 fx_d3_normalize64(int64_t x, int64_t y, int64_t z)
 {
+    if (fits31(x) && fits31(y) && fits31(z))
+        return norm32((int32_t)x, (int32_t)y, (int32_t)z);
     uint64_t ux = x < 0 ? 0u - (uint64_t)x : (uint64_t)x;
     uint64_t uy = y < 0 ? 0u - (uint64_t)y : (uint64_t)y;
     uint64_t uz = z < 0 ? 0u - (uint64_t)z : (uint64_t)z;
-    uint64_t any = ux | uy | uz;
-    if (any <= (uint64_t)INT32_MAX)
-        return norm32((int32_t)x, (int32_t)y, (int32_t)z);
-    /* Keep 31 bits of the largest component. */
-    int k = 33 - fx_clz64(any);
-    return norm32(shrink(x, k), shrink(y, k), shrink(z, k));
+    uint32_t top = (uint32_t)((ux | uy | uz) >> 32);
+    /* Keep 31 bits of the largest component: a shift by k = 33 - its
+     * bit length beyond 2^32, so sh = k - 1; k = 1 below 2^32. */
+    int sh = top ? 32 - fx_clz32(top) : 0;
+    return norm32(shrink(x, sh), shrink(y, sh), shrink(z, sh));
 }
 
 fx_dir3 fx_d3_cross_unit(fx_vec3 a, fx_vec3 b)

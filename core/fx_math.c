@@ -10,6 +10,7 @@
  * result is the correctly rounded quotient, the same on every target.
  */
 #include "fx_math.h"
+#include "fx_rsqrt.h"
 
 /* Saturated value of magnitude q with sign neg: q in [0, 2^32). */
 static inline fx_t sat_signed(uint32_t q, int neg)
@@ -108,7 +109,25 @@ uint32_t fx_udiv64_32(uint64_t n, uint32_t d)
     uint32_t v = d << s, vn1 = v >> 16, vn0 = v & 0xFFFF;
     uint32_t un32 = s ? (u1 << s) | (u0 >> (32 - s)) : u1;
     uint32_t un10 = u0 << s, un1 = un10 >> 16, un0 = un10 & 0xFFFF;
-    uint32_t q1 = un32 / vn1, rhat = un32 - q1 * vn1;
+    uint32_t q1, rhat, rc = 0;
+    if (FX_SOFT_MUL64) {
+        /* No divide instruction (ARMv6-M): a 32-bit divide is a library
+         * call of about 80 instructions. Instead rc = floor(R / 2^14) ~
+         * 2^31 / vn1 (at most 2^16) from R = 2^45 / sqrt(vn1^2), which
+         * fx_rsqrt_q29 gives at most 2^-20 low, so rc is at most 2^-15 +
+         * 2^-20 low; x rc / 2^31 then starts at most 6 below x / vn1
+         * (below 2^17), and the remainder fixes it (#17). */
+        rc = (uint32_t)fx_rsqrt_q29(vn1 * vn1) >> 14;
+        q1 = fx_rcp_quot(un32, rc);
+        rhat = un32 - q1 * vn1;
+        while (rhat >= vn1) {
+            q1++;
+            rhat -= vn1;
+        }
+    } else {
+        q1 = un32 / vn1;
+        rhat = un32 - q1 * vn1;
+    }
     while (q1 >= b || q1 * vn0 > b * rhat + un1) {
         q1--;
         rhat += vn1;
@@ -116,8 +135,18 @@ uint32_t fx_udiv64_32(uint64_t n, uint32_t d)
             break;
     }
     uint32_t un21 = un32 * b + un1 - q1 * v;
-    uint32_t q0 = un21 / vn1;
-    rhat = un21 - q0 * vn1;
+    uint32_t q0;
+    if (FX_SOFT_MUL64) {
+        q0 = fx_rcp_quot(un21, rc); /* as q1 */
+        rhat = un21 - q0 * vn1;
+        while (rhat >= vn1) {
+            q0++;
+            rhat -= vn1;
+        }
+    } else {
+        q0 = un21 / vn1;
+        rhat = un21 - q0 * vn1;
+    }
     while (q0 >= b || q0 * vn0 > b * rhat + un0) {
         q0--;
         rhat += vn1;

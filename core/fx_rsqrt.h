@@ -11,6 +11,30 @@
 
 extern const uint16_t fx_rsqrt_tab[192];
 
+/* floor(a b / 2^32), exact. Without a 32x32->64 multiply
+ * (FX_SOFT_MUL64), from 16-bit halves: a b = ah bh 2^32 + (m1 + m2)
+ * 2^16 + al bl, so the high word is ah bh plus the high halves of m1
+ * and m2 plus the carry of their low halves and al bl / 2^16, without
+ * the low word a full soft product joins (#17). */
+static inline uint32_t fx_umulhi32(uint32_t a, uint32_t b)
+{
+    if (!FX_SOFT_MUL64)
+        return (uint32_t)(fx_umul64(a, b) >> 32);
+    uint32_t ah = a >> 16, al = a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
+    uint32_t m1 = ah * bl, m2 = al * bh;
+    uint32_t t = ((al * bl) >> 16) + (m1 & 0xFFFFu) + (m2 & 0xFFFFu);
+    return ah * bh + (m1 >> 16) + (m2 >> 16) + (t >> 16);
+}
+
+/* floor(x rc / 2^31) for rc <= 2^16, exact, with 32-bit products only:
+ * x = xh 2^16 + xl gives floor((xh rc + floor(xl rc / 2^16)) / 2^15),
+ * and the sum stays below 2^32. A quotient x / d from rc ~ 2^31 / d,
+ * for cores without a divide instruction (#17). */
+static inline uint32_t fx_rcp_quot(uint32_t x, uint32_t rc)
+{
+    return ((x >> 16) * rc + (((x & 0xFFFFu) * rc) >> 16)) >> 15;
+}
+
 /* R ~ 2^45 / sqrt(m) for m in [2^30, 2^32), so R is in (2^29, 2^30].
  * Never above the truth, and at most 2^-20 below it (relative), as checked
  * over every m: the table seed r0, then with e = 1 - x r0^2 (x = m / 2^32)
@@ -19,7 +43,7 @@ extern const uint16_t fx_rsqrt_tab[192];
 static inline int32_t fx_rsqrt_q29(uint32_t m)
 {
     uint32_t r0 = fx_rsqrt_tab[(m >> 24) - 64];
-    uint32_t p = (uint32_t)(fx_umul64(m, r0 * r0) >> 32); /* Q4.28 */
+    uint32_t p = fx_umulhi32(m, r0 * r0); /* Q4.28 */
     int32_t e = (int32_t)(0x10000000u - p); /* Q.28; |e| < 2^21 */
     int32_t e7 = e >> 7;
     int32_t poly = (e >> 1) + ((3 * ((e7 * e7) >> 14)) >> 3);
@@ -35,9 +59,11 @@ static inline uint32_t fx_rsqrt_q30(uint32_t m, int32_t r)
     uint64_t r2 = fx_umul64(ur, ur); /* < 2^60 */
     /* m r^2 / 2^32, low by at most 2: at most 2^58 since r is low. */
     uint64_t p = fx_umul64(m, (uint32_t)(r2 >> 32)) +
-                 (fx_umul64(m, (uint32_t)r2) >> 32);
-    uint64_t e = ((uint64_t)1 << 58) - p; /* e * 2^58, below 2^39 */
-    return 2 * ur + (uint32_t)(fx_umul64(ur, (uint32_t)(e >> 8)) >> 50);
+                 fx_umulhi32(m, (uint32_t)r2);
+    /* e * 2^58 = 2^58 - p, below 2^39: its bits 8..39 are those of -p,
+     * as 2^58 only changes bit 58 and up (one constant less, #17). */
+    uint32_t e8 = (uint32_t)((0u - p) >> 8);
+    return 2 * ur + (fx_umulhi32(ur, e8) >> 18);
 }
 
 #endif /* FX_RSQRT_H */

@@ -13,6 +13,7 @@
  * loops, two 32-bit divides (single instructions on Cortex-M3).
  */
 #include "fx_math.h"
+#include "fx_rsqrt.h"
 
 /* Midpoints of sqrt over [i, i+1) * 2^24 for i = 64..255: the start of the
  * Newton step for a 32-bit input with its top two bits not both zero. */
@@ -94,12 +95,40 @@ static inline uint32_t sqrtrem48(uint32_t h, uint32_t lo, uint32_t *rem)
  * in [0, 2 root]. Base 2^16 Karatsuba step. */
 static inline uint32_t sqrtrem64(uint32_t hi, uint32_t lo, uint64_t *rem)
 {
-    uint32_t r1, s1 = sqrtrem32(hi, &r1); /* s1 in [2^15, 2^16) */
-    /* q = (r1 * 2^16 + a1) / (2 s1) with a1 = lo >> 16, computed as
-     * (r1 * 2^15 + a1 / 2) / s1 so the dividend fits: r1 <= 2^17 - 2. */
-    uint32_t n = (r1 << 15) | (lo >> 17);
-    uint32_t q = n / s1; /* q <= 2^16 */
-    uint32_t u = n - q * s1;
+    uint32_t r1, s1, n, q, u;
+    if (FX_SOFT_MUL64) {
+        /* ARMv6-M has no divide instruction either: a 32-bit divide is a
+         * library call of about 80 instructions there. So both divides
+         * come from R = fx_rsqrt_q29(hi) ~ 2^45 / sqrt(hi), at most 2^-20
+         * below it (#17). hi R / 2^45 is then within 2^-4 below sqrt(hi)
+         * < 2^16: floor(sqrt(hi)) or one less, which one test fixes. */
+        const uint32_t rr = (uint32_t)fx_rsqrt_q29(hi);
+        s1 = fx_umulhi32(hi, rr) >> 13;
+        r1 = hi - s1 * s1;
+        if (r1 > 2 * s1) {
+            r1 -= 2 * s1 + 1;
+            s1++;
+        }
+        n = (r1 << 15) | (lo >> 17); /* as below */
+        /* With rc = floor(R / 2^14) <= 2^16, n rc / 2^31 <= n / sqrt(hi)
+         * <= n / s1, and below n / s1 by a relative 2^-14 at most, with
+         * n / s1 <= 2^16 + 2: so q starts at most 5 low, and the
+         * remainder says how much (fx_rcp_quot). */
+        q = fx_rcp_quot(n, rr >> 14);
+        u = n - q * s1;
+        while (u >= s1) {
+            q++;
+            u -= s1;
+        }
+    } else {
+        s1 = sqrtrem32(hi, &r1); /* s1 in [2^15, 2^16) */
+        /* q = (r1 * 2^16 + a1) / (2 s1) with a1 = lo >> 16, computed as
+         * (r1 * 2^15 + a1 / 2) / s1 so the dividend fits: r1 <= 2^17 -
+         * 2. */
+        n = (r1 << 15) | (lo >> 17);
+        q = n / s1; /* q <= 2^16 */
+        u = n - q * s1;
+    }
     /* s wraps to 0 only when it is 2^32, one above the true root (which is
      * below 2^32), so the correction below always runs and undoes it. */
     uint32_t s = (s1 << 16) + q;
