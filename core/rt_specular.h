@@ -5,15 +5,16 @@
 
 #include "rt_scene.h"
 
-/* The highlight's weight ks (R.v)^n for unit normal n, unit direction ld
- * to the light (n.ld > 0), and unit ray direction d: 1 and *k when R.v is
- * above rv_min (rt_specular_min), else 0 (it would add 0). */
-static inline int rt_highlight(const rt_material *m, fx_dir3 n, fx_dir3 ld,
-                               fx_dir3 d, fx_t rv_min, fx_t *k)
+/* The highlight's weight ks (R.v)^n for unit direction ld to the light
+ * and unit ray direction d, given the exact dot products (fx_d3_dot_raw)
+ * nl = n.ld > 0 and nd = n.d of the unit normal n, which the shading loop
+ * has already formed: 1 and *k when R.v is above rv_min
+ * (rt_specular_min), else 0 (it would add 0). */
+static inline int rt_highlight(const rt_material *m, int64_t nl, int64_t nd,
+                               fx_dir3 ld, fx_dir3 d, fx_t rv_min, fx_t *k)
 {
     /* R = 2 (n.l) n - l; rv = R.v with v = -d, so
      * rv = (n.l)(-2 n.d) + l.d: two exact dot products. */
-    int64_t nl = fx_d3_dot_raw(n, ld), nd = fx_d3_dot_raw(n, d);
     int64_t ld_d = fx_d3_dot_raw(ld, d);
     /* The product nl nd has 4 FX_UBITS fraction bits: take each to
      * FX_UBITS first (both below 1). */
