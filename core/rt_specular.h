@@ -3,7 +3,7 @@
 #ifndef RT_SPECULAR_H
 #define RT_SPECULAR_H
 
-#include "rt_scene.h"
+#include "rt_colour.h"
 
 /* The highlight's weight ks (R.v)^n for unit direction ld to the light
  * and unit ray direction d, given the exact dot products (fx_d3_dot_raw)
@@ -20,12 +20,16 @@ static inline int rt_highlight(const rt_material *m, int64_t nl, int64_t nd,
      * FX_UBITS first (both below 1). */
     int64_t nl_u = (nl + ((int64_t)1 << (FX_UBITS - 1))) >> FX_UBITS;
     int64_t nd_u = (nd + ((int64_t)1 << (FX_UBITS - 1))) >> FX_UBITS;
-    int64_t rv2 = ld_d - 2 * nl_u * nd_u; /* 2 FX_UBITS fraction bits */
+    /* Both within 2^FX_UBITS (+1): one 32x32->64 product. */
+    int64_t rv2 = ld_d - 2 * fx_imul64((int32_t)nl_u, (int32_t)nd_u);
     fx_t rv = (fx_t)((rv2 + ((int64_t)1 << (2 * FX_UBITS - 17))) >>
                      (2 * FX_UBITS - 16));
     if (rv <= rv_min)
         return 0;
-    *k = fx_mul(m->specular, fx_powi(rv, m->shininess));
+    /* The power is in [0, 1] (fx_powi): fx_mul's value (rt_colour.h). */
+    const fx_t pw = fx_powi(rv, m->shininess);
+    *k = rt_wmul_ok(pw) ? rt_wmul_fast(m->specular, pw)
+                        : fx_mul(m->specular, pw);
     return 1;
 }
 
