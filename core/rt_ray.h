@@ -11,6 +11,7 @@
 /* Smallest hit distance and secondary-ray offset: 1/512 (see
  * docs/render-model.md and docs/numerics.md). */
 #define RT_EPS ((fx_t)128)
+#define RT_EPS_LOG2 7u /* RT_EPS = 2^RT_EPS_LOG2 */
 
 /* |d.n| below this (2 FX_UBITS fraction bits, fx_d3_dot_raw) counts as
  * parallel: 2^-16. */
@@ -41,7 +42,8 @@ static inline void rt_ray_set(rt_ray *r, fx_vec3 o, fx_dir3 d)
     r->small = (uint8_t)fx_v3_small(o);
 }
 
-/* How far along the normal a ray leaving object o starts off its surface:
+/* How far along the normal a ray leaving object o starts off its surface,
+ * 2^k (this k; a power of two, so offsetting needs no product):
  * shading offsets secondary and shadow rays by it, and the direction grids
  * (rt_dirgrid.c) widen their cones by it, so the two must agree.
  * Cylinders and cones are solved in a frame whose unit is 2^ushift ulps,
@@ -49,20 +51,49 @@ static inline void rt_ray_set(rt_ray *r, fx_vec3 o, fx_dir3 d)
  * cosine of its angle to the surface. Starting it 4 frame units off the
  * surface (never less than RT_EPS) keeps that root behind it at any angle:
  * no acne on large open shapes' inner walls. At most 2^17. */
-static inline fx_t rt_origin_offset(const rt_object *o)
+static inline unsigned rt_origin_log2(const rt_object *o)
 {
     if ((o->kind == RT_CYLINDER || o->kind == RT_CONE) && o->ushift > 4)
-        return (fx_t)1 << (o->ushift + 2);
-    return RT_EPS;
+        return (unsigned)o->ushift + 2u;
+    return RT_EPS_LOG2;
 }
 
-/* Moves the hit point *p off the surface by off along the unit normal ng
- * (towards the ray), once: rays leaving on the ray's side start there,
- * and many hits cast none. |off| <= 2^17. */
-static inline void rt_out_point(fx_vec3 *p, int *done, fx_dir3 ng, fx_t off)
+/* The offset itself, 2^rt_origin_log2(o) (7 to 17). */
+static inline fx_t rt_origin_offset(const rt_object *o)
+{
+    return (fx_t)1 << rt_origin_log2(o);
+}
+
+/* One component of a + s c for s = +-2^k (sign neg), k <= 17, and a unit
+ * component c, rounded as fx_madd_u: s c 2^-FX_UBITS + 1/2 rounded down
+ * is (+-c + 2^(U-1-k)) >> (U - k) exactly (U = FX_UBITS), or +-c 2^(k-U)
+ * for k >= U: a shift instead of a 64-bit product (a call on the M0). */
+static inline fx_t rt_madd_pow2(fx_t a, int32_t c, unsigned k, int neg)
+{
+    const int32_t v = neg ? -c : c; /* exact: |c| <= 2^FX_UBITS */
+    if (k >= FX_UBITS)
+        return fx_add(a, v * ((int32_t)1 << (k - FX_UBITS)));
+    return fx_add(a, (v + ((int32_t)1 << (FX_UBITS - 1 - k))) >>
+                         (FX_UBITS - k));
+}
+
+/* fx_v3_madd_d(a, d, neg ? -2^k : 2^k), by rt_madd_pow2. */
+static inline fx_vec3 rt_v3_madd_pow2(fx_vec3 a, fx_dir3 d, unsigned k,
+                                      int neg)
+{
+    return fx_v3(rt_madd_pow2(a.x, d.x, k, neg),
+                 rt_madd_pow2(a.y, d.y, k, neg),
+                 rt_madd_pow2(a.z, d.z, k, neg));
+}
+
+/* Moves the hit point *p off the surface by 2^k (rt_origin_log2) along
+ * the unit normal ng (towards the ray), once: rays leaving on the ray's
+ * side start there, and many hits cast none. */
+static inline void rt_out_point(fx_vec3 *p, int *done, fx_dir3 ng,
+                                unsigned k)
 {
     if (!*done) {
-        *p = fx_v3_madd_d(*p, ng, off);
+        *p = rt_v3_madd_pow2(*p, ng, k, 0);
         *done = 1;
     }
 }

@@ -87,10 +87,10 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     unsigned tex = 0; /* which colour: m->color, or color2 */
     /* The texture is read just inside the surface: see render-model.md. */
     if (RT_HAS_TEXTURES && m->texture != RT_TEX_NONE)
-        tex = rt_texel(m, o, fx_v3_madd_d(p, ng_out, -RT_EPS));
+        tex = rt_texel(m, o, rt_v3_madd_pow2(p, ng_out, RT_EPS_LOG2, 1));
     const rt_rgb base = tex ? m->color2 : m->color;
     /* Where rays leaving on the ray's side start: made on first use. */
-    const fx_t off = rt_origin_offset(o);
+    const unsigned off = rt_origin_log2(o); /* 2^off: the offset */
     fx_vec3 p_out = p;
     int have_out = 0;
     unsigned skip_out = (o->convex && outside) ? oi : RT_NO_OBJECT;
@@ -166,7 +166,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
                     (o->convex && (!outside || o->kind == RT_QUAD))
                         ? oi
                         : RT_NO_OBJECT;
-                rt_ray_set(&tr2, fx_v3_madd_d(p, ng, -off), td);
+                rt_ray_set(&tr2, rt_v3_madd_pow2(p, ng, off, 1), td);
                 RT_COUNT(wk, refraction);
                 rt_rgb_madd(&c,
                             trace(tr, wk, &tr2, depth + 1, wt, skip_in, oi),
