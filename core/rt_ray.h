@@ -32,13 +32,36 @@ typedef struct {
  * (oc.d) / |d|^2, not oc.d: without the factor its error is e |oc|; with
  * t (1 - e) it is e^2 |oc|. The bounding-sphere test applies it. */
 
+/* c^2 exact for |c| <= 2^30, from |c| = h 2^16 + l: h^2 2^32 + h l 2^17
+ * + l^2, three 32-bit products (h < 2^15, l < 2^16). */
+static inline uint64_t rt_square_soft(int32_t c)
+{
+    const uint32_t a = c < 0 ? 0u - (uint32_t)c : (uint32_t)c;
+    const uint32_t h = a >> 16, l = a & 0xFFFFu;
+    return ((uint64_t)(h * h) << 32) + ((uint64_t)(h * l) << 17) + l * l;
+}
+
+/* fx_d3_unit_err(d). Where the core has no 64-bit multiply
+ * (FX_SOFT_MUL64, the M0) its three squares are each a call from the
+ * shading loop's file (FX_MUL64_CALL): here they take three 32-bit
+ * products inline, the same exact sum (below 2^62). */
+static inline int32_t rt_unit_err(fx_dir3 d)
+{
+    if (!FX_SOFT_MUL64)
+        return fx_d3_unit_err(d);
+    const uint64_t s =
+        rt_square_soft(d.x) + rt_square_soft(d.y) + rt_square_soft(d.z);
+    return (int32_t)(((int64_t)s - ((int64_t)1 << (2 * FX_UBITS))) >>
+                     (2 * FX_UBITS - 32));
+}
+
 /* Sets a ray's origin and unit direction, and the two values its tests
  * derive from them (fx_d3_unit_err, fx_v3_small). */
 static inline void rt_ray_set(rt_ray *r, fx_vec3 o, fx_dir3 d)
 {
     r->o = o;
     r->d = d;
-    r->e = fx_d3_unit_err(d);
+    r->e = rt_unit_err(d);
     r->small = (uint8_t)fx_v3_small(o);
 }
 
