@@ -72,7 +72,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     const fx_dir3 ng_out =
         rt_normal(o, r, t, &p, part, m->reflect > 0 || m->transparency > 0);
     fx_dir3 ng = ng_out;
-    const int64_t dn = fx_d3_dot_raw(r->d, ng);
+    const int64_t dn = rt_dot_raw(r->d, ng);
     int outside = o->kind == RT_QUAD || dn <= 0;
     if (dn > 0)
         ng = fx_d3_neg(ng); /* face the ray */
@@ -82,7 +82,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     int64_t dnn = dn > 0 ? -dn : dn;
     if (RT_HAS_BUMP && m->bump != 0) {
         n = bumped_normal(m, o, r, p, ng, outside);
-        dnn = fx_d3_dot_raw(r->d, n);
+        dnn = rt_dot_raw(r->d, n);
     }
     unsigned tex = 0; /* which colour: m->color, or color2 */
     /* The texture is read just inside the surface: see render-model.md. */
@@ -111,7 +111,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
         fx_vec3 lv = fx_v3_sub(l->pos, p_out);
         fx_dir3 ld = fx_d3_normalize(lv);
         /* n.ld as fx_d3_dot rounds it; the highlight takes it exact. */
-        const int64_t nl = fx_d3_dot_raw(n, ld);
+        const int64_t nl = rt_dot_raw(n, ld);
         fx_t ndl = (fx_t)((nl + ((int64_t)1 << (2 * FX_UBITS - 17))) >>
                           (2 * FX_UBITS - 16));
         if (ndl <= 0)
