@@ -6,6 +6,33 @@
 #include "rt_colour.h"
 #include "rt_ray.h"
 
+/* a b rounded as fx_powi's products, for 0 <= a, b <= FX_ONE: below
+ * 2^32 with the half added, unless a = b = 1 (both have bit 16). */
+static inline uint32_t rt_umul_unit(uint32_t a, uint32_t b)
+{
+    if (a & b & (uint32_t)FX_ONE)
+        return (uint32_t)FX_ONE;
+    return (a * b + 0x8000u) >> 16;
+}
+
+/* fx_powi(x, n), the same value: where the core has no 64-bit multiply
+ * (FX_SOFT_MUL64, the M0) by 32-bit products (rt_umul_unit) for
+ * 0 <= x <= 1, as every factor then stays in [0, 1]. */
+static inline fx_t rt_powi(fx_t x, unsigned n)
+{
+    if (!FX_SOFT_MUL64 || (uint32_t)x > (uint32_t)FX_ONE)
+        return fx_powi(x, n);
+    uint32_t r = FX_ONE, b = (uint32_t)x;
+    while (n) {
+        if (n & 1)
+            r = rt_umul_unit(r, b);
+        n >>= 1;
+        if (n)
+            b = rt_umul_unit(b, b);
+    }
+    return (fx_t)r;
+}
+
 /* The highlight's weight ks (R.v)^n for unit direction ld to the light
  * and unit ray direction d, given the exact dot products (fx_d3_dot_raw)
  * nl = n.ld > 0 and nd = n.d of the unit normal n, which the shading loop
@@ -28,7 +55,7 @@ static inline int rt_highlight(const rt_material *m, int64_t nl, int64_t nd,
     if (rv <= rv_min)
         return 0;
     /* The power is in [0, 1] (fx_powi): fx_mul's value (rt_colour.h). */
-    const fx_t pw = fx_powi(rv, m->shininess);
+    const fx_t pw = rt_powi(rv, m->shininess);
     *k = rt_wmul_ok(pw) ? rt_wmul_fast(m->specular, pw)
                         : fx_mul(m->specular, pw);
     return 1;
