@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* rt_texture: procedural textures and bump noise, owned by materials. */
 #include "rt_texture.h"
+#include "rt_colour.h"
 
 /* Cell index of p - a along one axis for cells of size m->tex_scale:
  * floor((p - a) / size), exact at any distance from the origin a (the
@@ -49,15 +50,22 @@ static fx_t lattice(uint32_t seed, uint32_t ix, uint32_t iy, uint32_t iz)
     return (fx_t)(h >> 15) - FX_ONE;
 }
 
+/* fx_mul(a, b) where b may be a weight in [0, 1]: then rt_wmul_fast's
+ * two 32-bit products on the M0 (rt_colour.h), the same value. */
+static fx_t wmul(fx_t a, fx_t b)
+{
+    return rt_wmul_ok(b) ? rt_wmul_fast(a, b) : fx_mul(a, b);
+}
+
 static fx_t lerp(fx_t lo, fx_t hi, fx_t s)
 {
-    return fx_add(lo, fx_mul(s, fx_sub(hi, lo)));
+    return fx_add(lo, wmul(fx_sub(hi, lo), s));
 }
 
 /* Smoothstep weight f^2 (3 - 2f) for f in [0, 1). */
 static fx_t smooth(fx_t f)
 {
-    return fx_mul(fx_mul(f, f), FX_INT(3) - 2 * f);
+    return wmul(FX_INT(3) - 2 * f, wmul(f, f));
 }
 
 /* Trilinear value noise in lattice cell i (coordinates modulo 2^32, as
