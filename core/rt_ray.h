@@ -142,7 +142,7 @@ static inline fx_t rt_origin_offset(const rt_object *o)
 static inline fx_t rt_madd_pow2(fx_t a, int32_t c, unsigned k, int neg)
 {
     const int32_t v = neg ? -c : c; /* exact: |c| <= 2^FX_UBITS */
-    if (k >= FX_UBITS)
+    if (FX_UBITS <= 17 && k >= FX_UBITS) /* k <= 17 */
         return fx_add(a, v * ((int32_t)1 << (k - FX_UBITS)));
     return fx_add(a, (v + ((int32_t)1 << (FX_UBITS - 1 - k))) >>
                          (FX_UBITS - k));
