@@ -11,6 +11,7 @@
 /* Smallest hit distance and secondary-ray offset: 1/512 (see
  * docs/render-model.md and docs/numerics.md). */
 #define RT_EPS ((fx_t)128)
+#define RT_EPS_LOG2 7u /* RT_EPS = 2^RT_EPS_LOG2 */
 
 /* |d.n| below this (2 FX_UBITS fraction bits, fx_d3_dot_raw) counts as
  * parallel: 2^-16. */
@@ -31,17 +32,89 @@ typedef struct {
  * (oc.d) / |d|^2, not oc.d: without the factor its error is e |oc|; with
  * t (1 - e) it is e^2 |oc|. The bounding-sphere test applies it. */
 
+/* c^2 exact for |c| <= 2^30, from |c| = h 2^16 + l: h^2 2^32 + h l 2^17
+ * + l^2, three 32-bit products (h < 2^15, l < 2^16). */
+static inline uint64_t rt_square_soft(int32_t c)
+{
+    const uint32_t a = c < 0 ? 0u - (uint32_t)c : (uint32_t)c;
+    const uint32_t h = a >> 16, l = a & 0xFFFFu;
+    return ((uint64_t)(h * h) << 32) + ((uint64_t)(h * l) << 17) + l * l;
+}
+
+/* fx_d3_unit_err(d). Where the core has no 64-bit multiply
+ * (FX_SOFT_MUL64, the M0) its three squares are each a call from the
+ * shading loop's file (FX_MUL64_CALL): here they take three 32-bit
+ * products inline, the same exact sum (below 2^62). */
+static inline int32_t rt_unit_err(fx_dir3 d)
+{
+    if (!FX_SOFT_MUL64)
+        return fx_d3_unit_err(d);
+    const uint64_t s =
+        rt_square_soft(d.x) + rt_square_soft(d.y) + rt_square_soft(d.z);
+    return (int32_t)(((int64_t)s - ((int64_t)1 << (2 * FX_UBITS))) >>
+                     (2 * FX_UBITS - 32));
+}
+
+/* x0 y0 + x1 y1 + x2 y2 exact for any int32 values whose sum fits
+ * int64: from 16-bit halves (x = h 2^16 + l, 0 <= l < 2^16), the high,
+ * middle and low partial products summed apart (each a 32-bit product:
+ * |h h| <= 2^30, |h l| < 2^31, l l < 2^32) and joined once, wrapping.
+ * For the M0 (FX_SOFT_MUL64): one call instead of three to a
+ * 41-instruction product; out of line, as inline it grew the shading
+ * loop's frame, which every bounce level pays (288 bytes of stack on the
+ * seed, for 0.6 % fewer instructions). */
+RT_NOINLINE static int64_t rt_dot3_soft(int32_t x0, int32_t x1, int32_t x2,
+                                        int32_t y0, int32_t y1, int32_t y2)
+{
+    const int32_t xh0 = x0 >> 16, xh1 = x1 >> 16, xh2 = x2 >> 16;
+    const int32_t yh0 = y0 >> 16, yh1 = y1 >> 16, yh2 = y2 >> 16;
+    const uint32_t xl0 = (uint32_t)x0 & 0xFFFFu;
+    const uint32_t xl1 = (uint32_t)x1 & 0xFFFFu;
+    const uint32_t xl2 = (uint32_t)x2 & 0xFFFFu;
+    const uint32_t yl0 = (uint32_t)y0 & 0xFFFFu;
+    const uint32_t yl1 = (uint32_t)y1 & 0xFFFFu;
+    const uint32_t yl2 = (uint32_t)y2 & 0xFFFFu;
+    const int64_t hh =
+        (int64_t)(xh0 * yh0) + (int64_t)(xh1 * yh1) + (int64_t)(xh2 * yh2);
+    const int64_t mid = (int64_t)(xh0 * (int32_t)yl0) +
+                        (int64_t)((int32_t)xl0 * yh0) +
+                        (int64_t)(xh1 * (int32_t)yl1) +
+                        (int64_t)((int32_t)xl1 * yh1) +
+                        (int64_t)(xh2 * (int32_t)yl2) +
+                        (int64_t)((int32_t)xl2 * yh2);
+    const uint64_t ll =
+        (uint64_t)(xl0 * yl0) + (uint64_t)(xl1 * yl1) + (uint64_t)(xl2 * yl2);
+    return (int64_t)(((uint64_t)hh << 32) + ((uint64_t)mid << 16) + ll);
+}
+
+/* fx_d3_dot_raw(a, b), the same exact value (rt_dot3_soft on the M0). */
+static inline int64_t rt_dot_raw(fx_dir3 a, fx_dir3 b)
+{
+    if (!FX_SOFT_MUL64)
+        return fx_d3_dot_raw(a, b);
+    return rt_dot3_soft(a.x, a.y, a.z, b.x, b.y, b.z);
+}
+
+/* fx_pd_dot_raw(p, d), the same exact value (rt_dot3_soft on the M0). */
+static inline int64_t rt_pd_dot_raw(fx_vec3 p, fx_dir3 d)
+{
+    if (!FX_SOFT_MUL64)
+        return fx_pd_dot_raw(p, d);
+    return rt_dot3_soft(p.x, p.y, p.z, d.x, d.y, d.z);
+}
+
 /* Sets a ray's origin and unit direction, and the two values its tests
  * derive from them (fx_d3_unit_err, fx_v3_small). */
 static inline void rt_ray_set(rt_ray *r, fx_vec3 o, fx_dir3 d)
 {
     r->o = o;
     r->d = d;
-    r->e = fx_d3_unit_err(d);
+    r->e = rt_unit_err(d);
     r->small = (uint8_t)fx_v3_small(o);
 }
 
-/* How far along the normal a ray leaving object o starts off its surface:
+/* How far along the normal a ray leaving object o starts off its surface,
+ * 2^k (this k; a power of two, so offsetting needs no product):
  * shading offsets secondary and shadow rays by it, and the direction grids
  * (rt_dirgrid.c) widen their cones by it, so the two must agree.
  * Cylinders and cones are solved in a frame whose unit is 2^ushift ulps,
@@ -49,20 +122,49 @@ static inline void rt_ray_set(rt_ray *r, fx_vec3 o, fx_dir3 d)
  * cosine of its angle to the surface. Starting it 4 frame units off the
  * surface (never less than RT_EPS) keeps that root behind it at any angle:
  * no acne on large open shapes' inner walls. At most 2^17. */
-static inline fx_t rt_origin_offset(const rt_object *o)
+static inline unsigned rt_origin_log2(const rt_object *o)
 {
     if ((o->kind == RT_CYLINDER || o->kind == RT_CONE) && o->ushift > 4)
-        return (fx_t)1 << (o->ushift + 2);
-    return RT_EPS;
+        return (unsigned)o->ushift + 2u;
+    return RT_EPS_LOG2;
 }
 
-/* Moves the hit point *p off the surface by off along the unit normal ng
- * (towards the ray), once: rays leaving on the ray's side start there,
- * and many hits cast none. |off| <= 2^17. */
-static inline void rt_out_point(fx_vec3 *p, int *done, fx_dir3 ng, fx_t off)
+/* The offset itself, 2^rt_origin_log2(o) (7 to 17). */
+static inline fx_t rt_origin_offset(const rt_object *o)
+{
+    return (fx_t)1 << rt_origin_log2(o);
+}
+
+/* One component of a + s c for s = +-2^k (sign neg), k <= 17, and a unit
+ * component c, rounded as fx_madd_u: s c 2^-FX_UBITS + 1/2 rounded down
+ * is (+-c + 2^(U-1-k)) >> (U - k) exactly (U = FX_UBITS), or +-c 2^(k-U)
+ * for k >= U: a shift instead of a 64-bit product (a call on the M0). */
+static inline fx_t rt_madd_pow2(fx_t a, int32_t c, unsigned k, int neg)
+{
+    const int32_t v = neg ? -c : c; /* exact: |c| <= 2^FX_UBITS */
+    if (FX_UBITS <= 17 && k >= FX_UBITS) /* k <= 17 */
+        return fx_add(a, v * ((int32_t)1 << (k - FX_UBITS)));
+    return fx_add(a, (v + ((int32_t)1 << (FX_UBITS - 1 - k))) >>
+                         (FX_UBITS - k));
+}
+
+/* fx_v3_madd_d(a, d, neg ? -2^k : 2^k), by rt_madd_pow2. */
+static inline fx_vec3 rt_v3_madd_pow2(fx_vec3 a, fx_dir3 d, unsigned k,
+                                      int neg)
+{
+    return fx_v3(rt_madd_pow2(a.x, d.x, k, neg),
+                 rt_madd_pow2(a.y, d.y, k, neg),
+                 rt_madd_pow2(a.z, d.z, k, neg));
+}
+
+/* Moves the hit point *p off the surface by 2^k (rt_origin_log2) along
+ * the unit normal ng (towards the ray), once: rays leaving on the ray's
+ * side start there, and many hits cast none. */
+static inline void rt_out_point(fx_vec3 *p, int *done, fx_dir3 ng,
+                                unsigned k)
 {
     if (!*done) {
-        *p = fx_v3_madd_d(*p, ng, off);
+        *p = rt_v3_madd_pow2(*p, ng, k, 0);
         *done = 1;
     }
 }

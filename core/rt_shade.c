@@ -23,6 +23,16 @@ RT_NOINLINE static rt_rgb trace(const rt_tracer *tr, rt_work *wk,
                                 const rt_ray *r, unsigned depth, fx_t w,
                                 unsigned skip, unsigned from);
 
+/* d.n exact (fx_d3_dot_raw), given dnn, the same value formed once by
+ * shade(). Where a product is a call (FX_SOFT_MUL64, the M0) reusing dnn
+ * saves three per highlight and secondary ray; on the M3 a product is one
+ * instruction, and holding dnn in the frame cost more (3.5 instructions
+ * per pixel of the seed). */
+static inline int64_t d_dot_n(fx_dir3 d, fx_dir3 n, int64_t dnn)
+{
+    return FX_SOFT_MUL64 ? dnn : fx_d3_dot_raw(d, n);
+}
+
 /* The shading normal of a bumped hit of material m on object o at p (the
  * geometric normal ng facing the ray r): rt_bump's, unless the material
  * reflects or transmits and that normal would send the mirror direction
@@ -62,20 +72,25 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     const fx_dir3 ng_out =
         rt_normal(o, r, t, &p, part, m->reflect > 0 || m->transparency > 0);
     fx_dir3 ng = ng_out;
-    const int64_t dn = fx_d3_dot_raw(r->d, ng);
+    const int64_t dn = rt_dot_raw(r->d, ng);
     int outside = o->kind == RT_QUAD || dn <= 0;
     if (dn > 0)
         ng = fx_d3_neg(ng); /* face the ray */
     fx_dir3 n = ng;
-    if (RT_HAS_BUMP && m->bump != 0)
+    /* d.n exact, formed once for the highlights and the secondary rays:
+     * for n = ng it is -|d.ng| (negating each product is exact). */
+    int64_t dnn = dn > 0 ? -dn : dn;
+    if (RT_HAS_BUMP && m->bump != 0) {
         n = bumped_normal(m, o, r, p, ng, outside);
+        dnn = rt_dot_raw(r->d, n);
+    }
     unsigned tex = 0; /* which colour: m->color, or color2 */
     /* The texture is read just inside the surface: see render-model.md. */
     if (RT_HAS_TEXTURES && m->texture != RT_TEX_NONE)
-        tex = rt_texel(m, o, fx_v3_madd_d(p, ng_out, -RT_EPS));
+        tex = rt_texel(m, o, rt_v3_madd_pow2(p, ng_out, RT_EPS_LOG2, 1));
     const rt_rgb base = tex ? m->color2 : m->color;
     /* Where rays leaving on the ray's side start: made on first use. */
-    const fx_t off = rt_origin_offset(o);
+    const unsigned off = rt_origin_log2(o); /* 2^off: the offset */
     fx_vec3 p_out = p;
     int have_out = 0;
     unsigned skip_out = (o->convex && outside) ? oi : RT_NO_OBJECT;
@@ -95,7 +110,10 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
         const rt_light *l = &s->light[li];
         fx_vec3 lv = fx_v3_sub(l->pos, p_out);
         fx_dir3 ld = fx_d3_normalize(lv);
-        fx_t ndl = fx_d3_dot(n, ld);
+        /* n.ld as fx_d3_dot rounds it; the highlight takes it exact. */
+        const int64_t nl = rt_dot_raw(n, ld);
+        fx_t ndl = (fx_t)((nl + ((int64_t)1 << (2 * FX_UBITS - 17))) >>
+                          (2 * FX_UBITS - 16));
         if (ndl <= 0)
             continue;
         if (RT_HAS_SHADOWS && (tr->feat & RT_FEAT_SHADOWS) &&
@@ -103,10 +121,14 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
             continue;
         rt_rgb lc =
             li == 0 ? tr->lit[o->material][tex] : rt_rgb_mul(base, l->color);
-        rt_rgb_madd(&c, lc, fx_mul(kdl, ndl)); /* Lambert */
+        /* Lambert; a cosine up to 1 weighs kdl as rt_wmul (no call). */
+        rt_rgb_madd(&c, lc,
+                    rt_wmul_ok(ndl) ? rt_wmul_fast(kdl, ndl)
+                                    : fx_mul(kdl, ndl));
         fx_t ks;
         if (RT_HAS_SPECULAR && m->specular > 0 &&
-            rt_highlight(m, n, ld, r->d, tr->spec_min[o->material], &ks))
+            rt_highlight(m, nl, d_dot_n(r->d, n, dnn), ld, r->d,
+                         tr->spec_min[o->material], &ks))
             rt_rgb_madd(&c, l->color, ks); /* Phong */
     }
     if (depth >= tr->max_depth)
@@ -117,7 +139,8 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
         if (m->reflect > 0 && rt_worth_tracing(tr, wk, wr, depth + 1)) {
             rt_ray rr;
             rt_out_point(&p_out, &have_out, ng, off);
-            rt_ray_set(&rr, p_out, rt_reflect_dir(r->d, n));
+            rt_ray_set(&rr, p_out,
+                       rt_reflect_dir_dn(r->d, n, d_dot_n(r->d, n, dnn)));
             RT_COUNT(wk, reflection);
             rt_rgb_madd(&c, trace(tr, wk, &rr, depth + 1, wr, skip_out, oi),
                         m->reflect);
@@ -129,10 +152,11 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
             fx_t eta = outside ? m->ior_inv : m->ior;
             fx_dir3 td;
             rt_ray tr2;
-            if (!rt_refract_dir(r->d, n, eta, &td)) {
+            if (!rt_refract_dn(r->d, n, d_dot_n(r->d, n, dnn), eta, &td)) {
                 /* total internal reflection */
                 rt_out_point(&p_out, &have_out, ng, off);
-                rt_ray_set(&tr2, p_out, rt_reflect_dir(r->d, n));
+                rt_ray_set(&tr2, p_out,
+                           rt_reflect_dir_dn(r->d, n, d_dot_n(r->d, n, dnn)));
                 RT_COUNT(wk, reflection);
                 rt_rgb_madd(&c,
                             trace(tr, wk, &tr2, depth + 1, wt, skip_out, oi),
@@ -142,7 +166,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
                     (o->convex && (!outside || o->kind == RT_QUAD))
                         ? oi
                         : RT_NO_OBJECT;
-                rt_ray_set(&tr2, fx_v3_madd_d(p, ng, -off), td);
+                rt_ray_set(&tr2, rt_v3_madd_pow2(p, ng, off, 1), td);
                 RT_COUNT(wk, refraction);
                 rt_rgb_madd(&c,
                             trace(tr, wk, &tr2, depth + 1, wt, skip_in, oi),

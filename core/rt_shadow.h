@@ -89,9 +89,10 @@ static inline int rt_in_shadow(const rt_tracer *tr, rt_work *wk, unsigned li,
     rt_ray_set(&sr, p_out, ld);
     /* |lv| = lv . norm(lv): a dot product instead of a second square
      * root; its error (a few 2^-FX_UBITS of |lv|) only moves the far end
-     * of the shadow ray, by far less than RT_EPS. */
-    return rt_occluded(tr, wk, &sr, fx_sub(fx_pd_dot(lv, ld), RT_EPS), skip,
-                       li, cand);
+     * of the shadow ray, by far less than RT_EPS. Rounded as fx_pd_dot. */
+    const fx_t len = fx_sat64(
+        (rt_pd_dot_raw(lv, ld) + ((int64_t)1 << (FX_UBITS - 1))) >> FX_UBITS);
+    return rt_occluded(tr, wk, &sr, fx_sub(len, RT_EPS), skip, li, cand);
 }
 
 #endif /* RT_SHADOW_H */

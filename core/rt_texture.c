@@ -60,7 +60,8 @@ static int32_t lattice(uint32_t seed, uint32_t ix, uint32_t iy, uint32_t iz)
 static int32_t lerp(int32_t lo, int32_t hi, int32_t s)
 {
     const int64_t half = (int64_t)1 << (NOISE_BITS - 1);
-    return lo + (int32_t)((s * ((int64_t)hi - lo) + half) >> NOISE_BITS);
+    /* hi - lo fits 32 bits: both are in [-1, 1). */
+    return lo + (int32_t)((fx_imul64(s, hi - lo) + half) >> NOISE_BITS);
 }
 
 /* Smoothstep weight f^2 (3 - 2f) for f in [0, 1). */
@@ -68,8 +69,8 @@ static int32_t smooth(int32_t f)
 {
     const int64_t half = (int64_t)1 << (NOISE_BITS - 1);
     const int64_t f2 = (fx_imul64(f, f) + half) >> NOISE_BITS;
-    return (int32_t)((f2 * (((int64_t)3 << NOISE_BITS) - 2 * (int64_t)f) +
-                      half) >> NOISE_BITS);
+    const uint32_t w = (uint32_t)(3u << NOISE_BITS) - 2u * (uint32_t)f;
+    return (int32_t)((fx_iumul64((int32_t)f2, w) + half) >> NOISE_BITS);
 }
 
 /* Trilinear value noise in lattice cell i (coordinates modulo 2^32, as
