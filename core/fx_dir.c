@@ -16,6 +16,7 @@ static inline int32_t unit_c(int32_t b, int32_t r)
      * carry of the remainders. A third of the soft product's work. */
     if (FX_SOFT_MUL64 && FX_UBITS >= 29) {
         const int k = 45 - FX_UBITS;
+        const int up = FX_UBITS >= 29 ? 16 - k : 0; /* never negative */
         const uint32_t mask = ((uint32_t)1 << k) - 1u;
         const int32_t bh = b >> 16, rh = r >> 16;
         const uint32_t bl = (uint32_t)b & 0xFFFFu, rl = (uint32_t)r & 0xFFFFu;
@@ -23,7 +24,7 @@ static inline int32_t unit_c(int32_t b, int32_t r)
         const uint32_t uv = bl * (uint32_t)rh + ((bl * rl) >> 16) +
                             ((uint32_t)1 << (44 - FX_UBITS));
         const uint32_t c = (((uint32_t)sv & mask) + (uv & mask)) >> k;
-        return (int32_t)((uint32_t)(bh * rh) * ((uint32_t)1 << (16 - k)) +
+        return (int32_t)((uint32_t)(bh * rh) * ((uint32_t)1 << up) +
                          (uint32_t)(sv >> k) + (uv >> k) + c);
     }
     return (int32_t)((fx_imul64(b, r) + ((int64_t)1 << (60 - FX_UBITS))) >>
