@@ -65,12 +65,15 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     const rt_scene *s = tr->scene;
     const rt_object *o = &s->obj[oi];
     const rt_material *m = &s->mat[o->material];
+    /* Read once: the frame keeps them, where m itself was rebuilt from
+     * the object's material index at every use. */
+    const fx_t kr = m->reflect, kt = m->transparency;
     /* From a small origin a hit below 2^30 cannot leave the range. */
     fx_vec3 p = r->small && t < ((fx_t)1 << 30)
                     ? fx_v3_madd_d_near(r->o, r->d, t)
                     : fx_v3_madd_d(r->o, r->d, t);
     const fx_dir3 ng_out =
-        rt_normal(o, r, t, &p, part, m->reflect > 0 || m->transparency > 0);
+        rt_normal(o, r, t, &p, part, kr > 0 || kt > 0);
     fx_dir3 ng = ng_out;
     const int64_t dn = rt_dot_raw(r->d, ng);
     int outside = o->kind == RT_QUAD || dn <= 0;
@@ -135,20 +138,20 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
         return c;
 
     if (RT_HAS_REFLECTION) {
-        fx_t wr = rt_child_weight(w, m->reflect);
-        if (m->reflect > 0 && rt_worth_tracing(tr, wk, wr, depth + 1)) {
+        fx_t wr = rt_child_weight(w, kr);
+        if (kr > 0 && rt_worth_tracing(tr, wk, wr, depth + 1)) {
             rt_ray rr;
             rt_out_point(&p_out, &have_out, ng, off);
             rt_ray_set(&rr, p_out,
                        rt_reflect_dir_dn(r->d, n, d_dot_n(r->d, n, dnn)));
             RT_COUNT(wk, reflection);
             rt_rgb_madd(&c, trace(tr, wk, &rr, depth + 1, wr, skip_out, oi),
-                        m->reflect);
+                        kr);
         }
     }
     if (RT_HAS_REFRACTION) {
-        fx_t wt = rt_child_weight(w, m->transparency);
-        if (m->transparency > 0 && rt_worth_tracing(tr, wk, wt, depth + 1)) {
+        fx_t wt = rt_child_weight(w, kt);
+        if (kt > 0 && rt_worth_tracing(tr, wk, wt, depth + 1)) {
             fx_t eta = outside ? m->ior_inv : m->ior;
             fx_dir3 td;
             rt_ray tr2;
@@ -160,7 +163,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
                 RT_COUNT(wk, reflection);
                 rt_rgb_madd(&c,
                             trace(tr, wk, &tr2, depth + 1, wt, skip_out, oi),
-                            m->transparency);
+                            kt);
             } else {
                 unsigned skip_in =
                     (o->convex && (!outside || o->kind == RT_QUAD))
@@ -170,7 +173,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
                 RT_COUNT(wk, refraction);
                 rt_rgb_madd(&c,
                             trace(tr, wk, &tr2, depth + 1, wt, skip_in, oi),
-                            m->transparency);
+                            kt);
             }
         }
     }
