@@ -157,16 +157,4 @@ static inline fx_vec3 rt_v3_madd_pow2(fx_vec3 a, fx_dir3 d, unsigned k,
                  rt_madd_pow2(a.z, d.z, k, neg));
 }
 
-/* Moves the hit point *p off the surface by 2^k (rt_origin_log2) along
- * the unit normal ng (towards the ray), once: rays leaving on the ray's
- * side start there, and many hits cast none. */
-static inline void rt_out_point(fx_vec3 *p, int *done, fx_dir3 ng,
-                                unsigned k)
-{
-    if (!*done) {
-        *p = rt_v3_madd_pow2(*p, ng, k, 0);
-        *done = 1;
-    }
-}
-
 #endif /* RT_RAY_H */

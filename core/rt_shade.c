@@ -92,10 +92,11 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     if (RT_HAS_TEXTURES && m->texture != RT_TEX_NONE)
         tex = rt_texel(m, o, rt_v3_madd_pow2(p, ng_out, RT_EPS_LOG2, 1));
     const rt_rgb base = tex ? m->color2 : m->color;
-    /* Where rays leaving on the ray's side start: made on first use. */
+    /* Where rays leaving on the ray's side start. Made here, not on
+     * first use: nearly every hit casts a shadow or a mirror ray, and the
+     * flag of a lazy one cost more than the few it saved. */
     const unsigned off = rt_origin_log2(o); /* 2^off: the offset */
-    fx_vec3 p_out = p;
-    int have_out = 0;
+    const fx_vec3 p_out = rt_v3_madd_pow2(p, ng, off, 0);
     unsigned skip_out = (o->convex && outside) ? oi : RT_NO_OBJECT;
 
     rt_rgb c = tr->amb[o->material][tex];
@@ -107,8 +108,6 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     /* Lights are seen from P_out, where their shadow rays start: a shadow
      * ray then ends at its light, and a surface through the light (a
      * light on a surface) is met only there, beyond t_max. */
-    if (!dark && n_lights > 0)
-        rt_out_point(&p_out, &have_out, ng, off);
     for (unsigned li = 0; !dark && li < n_lights; li++) {
         const rt_light *l = &s->light[li];
         fx_vec3 lv = fx_v3_sub(l->pos, p_out);
@@ -141,7 +140,6 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
         fx_t wr = rt_child_weight(w, kr);
         if (kr > 0 && rt_worth_tracing(tr, wk, wr, depth + 1)) {
             rt_ray rr;
-            rt_out_point(&p_out, &have_out, ng, off);
             rt_ray_set(&rr, p_out,
                        rt_reflect_dir_dn(r->d, n, d_dot_n(r->d, n, dnn)));
             RT_COUNT(wk, reflection);
@@ -157,8 +155,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
             rt_ray tr2;
             if (!rt_refract_dn(r->d, n, d_dot_n(r->d, n, dnn), eta, &td)) {
                 /* total internal reflection */
-                rt_out_point(&p_out, &have_out, ng, off);
-                rt_ray_set(&tr2, p_out,
+                    rt_ray_set(&tr2, p_out,
                            rt_reflect_dir_dn(r->d, n, d_dot_n(r->d, n, dnn)));
                 RT_COUNT(wk, reflection);
                 rt_rgb_madd(&c,
