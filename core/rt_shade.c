@@ -123,10 +123,9 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
             continue;
         rt_rgb lc =
             li == 0 ? tr->lit[o->material][tex] : rt_rgb_mul(base, l->color);
-        /* Lambert; a cosine up to 1 weighs kdl as rt_wmul (no call). */
-        rt_rgb_madd(&c, lc,
-                    rt_wmul_ok(ndl) ? rt_wmul_fast(kdl, ndl)
-                                    : fx_mul(kdl, ndl));
+        /* Lambert: fx_mul's value, which |kdl| <= 1 (the parser's ranges)
+         * keeps from saturating at any ndl (rt_wmul: no test). */
+        rt_rgb_madd(&c, lc, rt_wmul(kdl, ndl));
         fx_t ks;
         if (RT_HAS_SPECULAR && m->specular > 0 &&
             rt_highlight(m, nl, d_dot_n(r->d, n, dnn), ld, r->d,
