@@ -96,7 +96,10 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
      * first use: nearly every hit casts a shadow or a mirror ray, and the
      * flag of a lazy one cost more than the few it saved. */
     const unsigned off = rt_origin_log2(o); /* 2^off: the offset */
-    const fx_vec3 p_out = rt_v3_madd_pow2(p, ng, off, 0);
+    /* Most objects take RT_EPS: its shifts are then constants. */
+    const fx_vec3 p_out = off == RT_EPS_LOG2
+                              ? rt_v3_madd_pow2(p, ng, RT_EPS_LOG2, 0)
+                              : rt_v3_madd_pow2(p, ng, off, 0);
     unsigned skip_out = (o->convex && outside) ? oi : RT_NO_OBJECT;
 
     rt_rgb c = tr->amb[o->material][tex];
