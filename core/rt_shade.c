@@ -58,6 +58,39 @@ RT_NOINLINE static fx_dir3 bumped_normal(const rt_material *m,
     return n;
 }
 
+/* (t c + 2^(U-1)) >> U (U = FX_UBITS > 16) for a unit component c, the
+ * rounded product of fx_madd_u, in 32-bit pieces: with t = th 2^16 + tl
+ * and c = ch 2^16 + cl (tl, cl unsigned), t c = a 2^32 + (b1 + b2) 2^16
+ * + l; the sum is taken modulo 2^32 (which the value fits where used)
+ * and only the terms below 2^k (k = U - 16) are added before the shift,
+ * each below 2^30 as |ch| <= 2^k. Four 16x16 multiplies inline. */
+static inline fx_t tmul_u_soft(fx_t t, int32_t c)
+{
+    const unsigned k = FX_UBITS - 16;
+    const int32_t th = t >> 16, ch = c >> 16;
+    const uint32_t tl = (uint32_t)t & 0xFFFFu, cl = (uint32_t)c & 0xFFFFu;
+    const int32_t a = th * ch, b1 = th * (int32_t)cl, b2 = (int32_t)tl * ch;
+    /* (l + 2^(U-1)) >> 16, as 2^(U-1) is a multiple of 2^16 */
+    const uint32_t lr = ((tl * cl) >> 16) + ((1u << (FX_UBITS - 1)) >> 16);
+    const int32_t low = (b1 & (int32_t)((1u << k) - 1)) + b2 + (int32_t)lr;
+    return (fx_t)(((uint32_t)a << (16 - k)) + (uint32_t)(b1 >> k) +
+                  (uint32_t)(low >> k));
+}
+
+/* The hit point of r at t, as shade() forms it (fx_v3_madd_d_near from a
+ * small origin below 2^30, else fx_v3_madd_d), for the M0: products by
+ * tmul_u_soft, not three calls (FX_MUL64_CALL), out of line so that they
+ * stay out of shade()'s frame. */
+RT_NOINLINE static fx_vec3 hit_point_soft(const rt_ray *r, fx_t t)
+{
+    const fx_t ox = tmul_u_soft(t, r->d.x);
+    const fx_t oy = tmul_u_soft(t, r->d.y);
+    const fx_t oz = tmul_u_soft(t, r->d.z);
+    if (r->small && t < ((fx_t)1 << 30))
+        return fx_v3(r->o.x + ox, r->o.y + oy, r->o.z + oz);
+    return fx_v3(fx_add(r->o.x, ox), fx_add(r->o.y, oy), fx_add(r->o.z, oz));
+}
+
 /* Colour of the hit (object oi, part, distance t) seen along r. */
 static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
                     unsigned depth, fx_t w, uint16_t oi, uint16_t part, fx_t t)
@@ -69,7 +102,8 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
      * the object's material index at every use. */
     const fx_t kr = m->reflect, kt = m->transparency;
     /* From a small origin a hit below 2^30 cannot leave the range. */
-    fx_vec3 p = r->small && t < ((fx_t)1 << 30)
+    fx_vec3 p = FX_SOFT_MUL64 && FX_UBITS > 16 ? hit_point_soft(r, t)
+                : r->small && t < ((fx_t)1 << 30)
                     ? fx_v3_madd_d_near(r->o, r->d, t)
                     : fx_v3_madd_d(r->o, r->d, t);
     const fx_dir3 ng_out =
@@ -157,7 +191,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
             rt_ray tr2;
             if (!rt_refract_dn(r->d, n, d_dot_n(r->d, n, dnn), eta, &td)) {
                 /* total internal reflection */
-                    rt_ray_set(&tr2, p_out,
+                rt_ray_set(&tr2, p_out,
                            rt_reflect_dir_dn(r->d, n, d_dot_n(r->d, n, dnn)));
                 RT_COUNT(wk, reflection);
                 rt_rgb_madd(&c,
