@@ -17,6 +17,9 @@
  * of d (6 instructions fewer per component on the Cortex-M3). */
 static inline int32_t rt_mirror_c(int32_t d, int32_t nk, int32_t n)
 {
+    if (FX_SOFT_MUL64 && FX_UBITS >= 18) /* no call (rt_mulsh_soft) */
+        return (int32_t)((uint32_t)d +
+                         (uint32_t)rt_mulsh_soft(nk, n, FX_UBITS - 1));
     const int64_t q =
         (fx_imul64(nk, n) + ((int64_t)1 << (FX_UBITS - 2))) >> (FX_UBITS - 1);
     return (int32_t)((uint32_t)d + (uint32_t)q);
@@ -27,6 +30,16 @@ static inline int32_t rt_mirror_c(int32_t d, int32_t nk, int32_t n)
 static inline int32_t rt_dotu_of(int64_t dn)
 {
     return (int32_t)((dn + ((int64_t)1 << (FX_UBITS - 1))) >> FX_UBITS);
+}
+
+/* fx_renorm_c(c, e), the same value, for |e| <= 2^15: where the core
+ * has no 64-bit multiply (FX_SOFT_MUL64, the M0) by rt_mulsh_soft. */
+static inline int32_t rt_renorm_c(int32_t c, int32_t e)
+{
+    if (!FX_SOFT_MUL64)
+        return fx_renorm_c(c, e);
+    const int32_t v = c - rt_mulsh_soft(c, e, FX_UBITS + 1);
+    return v > FX_UONE ? FX_UONE : (v < -FX_UONE ? -FX_UONE : v);
 }
 
 /* fx_d3_renorm(u), the same value: its test e = |u|^2 - 1 within
@@ -43,8 +56,8 @@ static inline fx_dir3 rt_renorm(fx_dir3 u)
     if ((uint64_t)t + lo >= 2 * lo + ((uint64_t)1 << FX_UBITS))
         return fx_d3_normalize(fx_d3_raw(u));
     const int32_t e = (int32_t)(uint32_t)((uint64_t)t >> FX_UBITS);
-    return fx_d3(fx_renorm_c(u.x, e), fx_renorm_c(u.y, e),
-                 fx_renorm_c(u.z, e));
+    return fx_d3(rt_renorm_c(u.x, e), rt_renorm_c(u.y, e),
+                 rt_renorm_c(u.z, e));
 }
 
 /* Mirror direction d - 2 (d.n) n of unit d about unit n, given the exact

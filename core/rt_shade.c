@@ -58,34 +58,15 @@ RT_NOINLINE static fx_dir3 bumped_normal(const rt_material *m,
     return n;
 }
 
-/* (t c + 2^(U-1)) >> U (U = FX_UBITS > 16) for a unit component c, the
- * rounded product of fx_madd_u, in 32-bit pieces: with t = th 2^16 + tl
- * and c = ch 2^16 + cl (tl, cl unsigned), t c = a 2^32 + (b1 + b2) 2^16
- * + l; the sum is taken modulo 2^32 (which the value fits where used)
- * and only the terms below 2^k (k = U - 16) are added before the shift,
- * each below 2^30 as |ch| <= 2^k. Four 16x16 multiplies inline. */
-static inline fx_t tmul_u_soft(fx_t t, int32_t c)
-{
-    const unsigned k = FX_UBITS - 16;
-    const int32_t th = t >> 16, ch = c >> 16;
-    const uint32_t tl = (uint32_t)t & 0xFFFFu, cl = (uint32_t)c & 0xFFFFu;
-    const int32_t a = th * ch, b1 = th * (int32_t)cl, b2 = (int32_t)tl * ch;
-    /* (l + 2^(U-1)) >> 16, as 2^(U-1) is a multiple of 2^16 */
-    const uint32_t lr = ((tl * cl) >> 16) + ((1u << (FX_UBITS - 1)) >> 16);
-    const int32_t low = (b1 & (int32_t)((1u << k) - 1)) + b2 + (int32_t)lr;
-    return (fx_t)(((uint32_t)a << (16 - k)) + (uint32_t)(b1 >> k) +
-                  (uint32_t)(low >> k));
-}
-
 /* The hit point of r at t, as shade() forms it (fx_v3_madd_d_near from a
  * small origin below 2^30, else fx_v3_madd_d), for the M0: products by
- * tmul_u_soft, not three calls (FX_MUL64_CALL), out of line so that they
- * stay out of shade()'s frame. */
+ * rt_mulsh_soft, not three calls (FX_MUL64_CALL), out of line so that
+ * they stay out of shade()'s frame. */
 RT_NOINLINE static fx_vec3 hit_point_soft(const rt_ray *r, fx_t t)
 {
-    const fx_t ox = tmul_u_soft(t, r->d.x);
-    const fx_t oy = tmul_u_soft(t, r->d.y);
-    const fx_t oz = tmul_u_soft(t, r->d.z);
+    const fx_t ox = rt_mulsh_soft(t, r->d.x, FX_UBITS);
+    const fx_t oy = rt_mulsh_soft(t, r->d.y, FX_UBITS);
+    const fx_t oz = rt_mulsh_soft(t, r->d.z, FX_UBITS);
     if (r->small && t < ((fx_t)1 << 30))
         return fx_v3(r->o.x + ox, r->o.y + oy, r->o.z + oz);
     return fx_v3(fx_add(r->o.x, ox), fx_add(r->o.y, oy), fx_add(r->o.z, oz));
