@@ -7,16 +7,22 @@
 #ifndef RT_BOUNCE_H
 #define RT_BOUNCE_H
 
-#include "fx_dir.h"
+#include "rt_ray.h"
 
 /* One component of d - 2 k n, rounded once from its exact value:
  * (d 2^U / 2 - k n + 2^(U-2)) >> (U - 1). Within 32 bits, as the mirror
- * image of a unit vector is one. */
-static inline int32_t rt_mirror_c(int32_t d, int32_t k, int32_t n)
+ * image of a unit vector is one. The low U - 1 bits of d 2^U / 2 are 0,
+ * so that is d + ((2^(U-2) - k n) >> (U - 1)), added in 32 bits (the
+ * sum fits): given nk = -k, one multiply-accumulate and no 64-bit shift
+ * of d (6 instructions fewer per component on the Cortex-M3). */
+static inline int32_t rt_mirror_c(int32_t d, int32_t nk, int32_t n)
 {
-    return (int32_t)(((int64_t)d * (FX_UONE / 2) - fx_imul64(k, n) +
-                      ((int64_t)1 << (FX_UBITS - 2))) >>
-                     (FX_UBITS - 1));
+    if (FX_SOFT_MUL64 && FX_UBITS >= 18) /* no call (rt_mulsh_soft) */
+        return (int32_t)((uint32_t)d +
+                         (uint32_t)rt_mulsh_soft(nk, n, FX_UBITS - 1));
+    const int64_t q =
+        (fx_imul64(nk, n) + ((int64_t)1 << (FX_UBITS - 2))) >> (FX_UBITS - 1);
+    return (int32_t)((uint32_t)d + (uint32_t)q);
 }
 
 /* d.n with FX_UBITS fraction bits, rounded as fx_d3_dotu, from the exact
@@ -26,16 +32,44 @@ static inline int32_t rt_dotu_of(int64_t dn)
     return (int32_t)((dn + ((int64_t)1 << (FX_UBITS - 1))) >> FX_UBITS);
 }
 
+/* fx_renorm_c(c, e), the same value, for |e| <= 2^15: where the core
+ * has no 64-bit multiply (FX_SOFT_MUL64, the M0) by rt_mulsh_soft. */
+static inline int32_t rt_renorm_c(int32_t c, int32_t e)
+{
+    if (!FX_SOFT_MUL64)
+        return fx_renorm_c(c, e);
+    const int32_t v = c - rt_mulsh_soft(c, e, FX_UBITS + 1);
+    return v > FX_UONE ? FX_UONE : (v < -FX_UONE ? -FX_UONE : v);
+}
+
+/* fx_d3_renorm(u), the same value: its test e = |u|^2 - 1 within
+ * +-2^-15 as one unsigned 64-bit compare of the exact sum, and e itself
+ * a 32-bit factor (GCC, seeing e's range, made each product a 64x64
+ * one: three multiplies instead of one on the Cortex-M3). */
+static inline fx_dir3 rt_renorm(fx_dir3 u)
+{
+    /* t >> FX_UBITS is fx_d3_renorm's e. */
+    const int64_t t = rt_dot_raw(u, u) - ((int64_t)1 << (2 * FX_UBITS)) +
+                      ((int64_t)1 << (FX_UBITS - 1));
+    /* |e| <= 2^15 (in 2^-FX_UBITS): -2^(2U-15) <= t < 2^(2U-15) + 2^U. */
+    const uint64_t lo = (uint64_t)1 << (2 * FX_UBITS - 15);
+    if ((uint64_t)t + lo >= 2 * lo + ((uint64_t)1 << FX_UBITS))
+        return fx_d3_normalize(fx_d3_raw(u));
+    const int32_t e = (int32_t)(uint32_t)((uint64_t)t >> FX_UBITS);
+    return fx_d3(rt_renorm_c(u.x, e), rt_renorm_c(u.y, e),
+                 rt_renorm_c(u.z, e));
+}
+
 /* Mirror direction d - 2 (d.n) n of unit d about unit n, given the exact
  * dn = fx_d3_dot_raw(d, n): formed from the rounded d.n, then only
- * renormalised (fx_d3_renorm), since the reflection of a unit vector is
+ * renormalised (rt_renorm), since the reflection of a unit vector is
  * one. */
 static inline fx_dir3 rt_reflect_dir_dn(fx_dir3 d, fx_dir3 n, int64_t dn)
 {
-    const int32_t k = rt_dotu_of(dn); /* |k| <= 2^FX_UBITS */
-    return fx_d3_renorm(fx_d3(rt_mirror_c(d.x, k, n.x),
-                              rt_mirror_c(d.y, k, n.y),
-                              rt_mirror_c(d.z, k, n.z)));
+    const int32_t nk = -rt_dotu_of(dn); /* |k| <= 2^FX_UBITS */
+    return rt_renorm(fx_d3(rt_mirror_c(d.x, nk, n.x),
+                           rt_mirror_c(d.y, nk, n.y),
+                           rt_mirror_c(d.z, nk, n.z)));
 }
 
 /* The same, finding d.n itself. */
@@ -48,6 +82,15 @@ static inline fx_dir3 rt_reflect_dir(fx_dir3 d, fx_dir3 n)
 static inline int rt_bitlen64(uint64_t v)
 {
     return v ? 64 - fx_clz64(v) : 0;
+}
+
+/* fx_imul64(a, b): where the core has no 64-bit multiply (FX_SOFT_MUL64,
+ * the M0) inline (fx_imul64_soft), not a call (FX_MUL64_CALL): the
+ * refraction, out of line there, has a dozen, outside the recursion's
+ * frame. */
+static inline int64_t rt_imul64(int32_t a, int32_t b)
+{
+    return FX_SOFT_MUL64 ? fx_imul64_soft(a, b) : fx_imul64(a, b);
 }
 
 /* Transmitted direction of unit d through a surface of unit normal n
@@ -63,20 +106,20 @@ static inline int rt_refract_dn(fx_dir3 d, fx_dir3 n, int64_t dn, fx_t eta,
     const int64_t one = (int64_t)1 << FX_UBITS;
     const int32_t cosi = -rt_dotu_of(dn); /* in [0, 1] */
     const int32_t sin2 =
-        (int32_t)(one - (fx_imul64(cosi, cosi) >> FX_UBITS)); /* [0, 1] */
+        (int32_t)(one - (rt_imul64(cosi, cosi) >> FX_UBITS)); /* [0, 1] */
     /* eta^2 sin2 / 2^32 with eta^2 = e1 2^16 + e0 (Q32.32): two products
      * below 2^61 instead of one of 76 bits. */
-    const int64_t eta2 = fx_imul64(eta, eta); /* < 2^46 */
+    const int64_t eta2 = rt_imul64(eta, eta); /* < 2^46 */
     const int32_t e1 = (int32_t)(eta2 >> 16), e0 = (int32_t)(eta2 & 0xFFFF);
     const int64_t es =
-        (fx_imul64(e1, sin2) + (fx_imul64(e0, sin2) >> 16)) >> 16;
+        (rt_imul64(e1, sin2) + (rt_imul64(e0, sin2) >> 16)) >> 16;
     const int64_t k = one - es;
     if (k < 0)
         return 0;
     /* sqrt(k) with FX_UBITS fraction bits: k << FX_UBITS <= 2^60. */
     const int64_t sq = (int64_t)fx_isqrt64((uint64_t)k << FX_UBITS);
     /* eta cos_i to FX_UBITS fraction bits, rounded (below 2^37). */
-    const int64_t ec = (fx_imul64(eta, cosi) + 0x8000) >> 16;
+    const int64_t ec = (rt_imul64(eta, cosi) + 0x8000) >> 16;
     int64_t ce = (int64_t)eta << FX_USHIFT; /* eta, FX_UBITS fraction bits */
     int64_t cf = ec - sq;
     /* Only the direction of ce d + cf n matters: scale both coefficients
@@ -89,9 +132,9 @@ static inline int rt_refract_dn(fx_dir3 d, fx_dir3 n, int64_t dn, fx_t eta,
         cf = (cf + ((int64_t)1 << (sh - 1))) >> sh;
     }
     const int32_t a = (int32_t)ce, b = (int32_t)cf; /* now within 31 bits */
-    *t = fx_d3_normalize64(fx_imul64(a, d.x) + fx_imul64(b, n.x),
-                           fx_imul64(a, d.y) + fx_imul64(b, n.y),
-                           fx_imul64(a, d.z) + fx_imul64(b, n.z));
+    *t = fx_d3_normalize64(rt_imul64(a, d.x) + rt_imul64(b, n.x),
+                           rt_imul64(a, d.y) + rt_imul64(b, n.y),
+                           rt_imul64(a, d.z) + rt_imul64(b, n.z));
     return 1;
 }
 

@@ -87,6 +87,26 @@ RT_NOINLINE static int64_t rt_dot3_soft(int32_t x0, int32_t x1, int32_t x2,
     return (int64_t)(((uint64_t)hh << 32) + ((uint64_t)mid << 16) + ll);
 }
 
+/* (a c + 2^(s-1)) >> s modulo 2^32, for 17 <= s <= 32 and |c| <= 2^30
+ * (a unit component), in 32-bit pieces: with a = ah 2^16 + al and c = ch
+ * 2^16 + cl (al, cl unsigned), a c = hh 2^32 + (b1 + b2) 2^16 + l; only
+ * the terms below 2^k (k = s - 16) are added before the shift, each
+ * below 2^31 in magnitude as |ch| <= 2^14, and 2^(s-1) is a multiple of
+ * 2^16. Four 16x16 multiplies inline: where the core has no 64-bit
+ * multiply (FX_SOFT_MUL64, the M0) not a call (FX_MUL64_CALL) and the
+ * 64-bit rounding shift. */
+static inline int32_t rt_mulsh_soft(int32_t a, int32_t c, unsigned s)
+{
+    const unsigned k = s - 16;
+    const int32_t ah = a >> 16, ch = c >> 16;
+    const uint32_t al = (uint32_t)a & 0xFFFFu, cl = (uint32_t)c & 0xFFFFu;
+    const int32_t hh = ah * ch, b1 = ah * (int32_t)cl, b2 = (int32_t)al * ch;
+    const uint32_t lr = ((al * cl) >> 16) + ((1u << (s - 1)) >> 16);
+    const int32_t low = (b1 & (int32_t)((1u << k) - 1)) + b2 + (int32_t)lr;
+    return (int32_t)(((uint32_t)hh << (16 - k)) + (uint32_t)(b1 >> k) +
+                     (uint32_t)(low >> k));
+}
+
 /* fx_d3_dot_raw(a, b), the same exact value (rt_dot3_soft on the M0). */
 static inline int64_t rt_dot_raw(fx_dir3 a, fx_dir3 b)
 {
@@ -155,18 +175,6 @@ static inline fx_vec3 rt_v3_madd_pow2(fx_vec3 a, fx_dir3 d, unsigned k,
     return fx_v3(rt_madd_pow2(a.x, d.x, k, neg),
                  rt_madd_pow2(a.y, d.y, k, neg),
                  rt_madd_pow2(a.z, d.z, k, neg));
-}
-
-/* Moves the hit point *p off the surface by 2^k (rt_origin_log2) along
- * the unit normal ng (towards the ray), once: rays leaving on the ray's
- * side start there, and many hits cast none. */
-static inline void rt_out_point(fx_vec3 *p, int *done, fx_dir3 ng,
-                                unsigned k)
-{
-    if (!*done) {
-        *p = rt_v3_madd_pow2(*p, ng, k, 0);
-        *done = 1;
-    }
 }
 
 #endif /* RT_RAY_H */

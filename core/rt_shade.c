@@ -58,6 +58,20 @@ RT_NOINLINE static fx_dir3 bumped_normal(const rt_material *m,
     return n;
 }
 
+/* The hit point of r at t, as shade() forms it (fx_v3_madd_d_near from a
+ * small origin below 2^30, else fx_v3_madd_d), for the M0: products by
+ * rt_mulsh_soft, not three calls (FX_MUL64_CALL), out of line so that
+ * they stay out of shade()'s frame. */
+RT_NOINLINE static fx_vec3 hit_point_soft(const rt_ray *r, fx_t t)
+{
+    const fx_t ox = rt_mulsh_soft(t, r->d.x, FX_UBITS);
+    const fx_t oy = rt_mulsh_soft(t, r->d.y, FX_UBITS);
+    const fx_t oz = rt_mulsh_soft(t, r->d.z, FX_UBITS);
+    if (r->small && t < ((fx_t)1 << 30))
+        return fx_v3(r->o.x + ox, r->o.y + oy, r->o.z + oz);
+    return fx_v3(fx_add(r->o.x, ox), fx_add(r->o.y, oy), fx_add(r->o.z, oz));
+}
+
 /* Colour of the hit (object oi, part, distance t) seen along r. */
 static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
                     unsigned depth, fx_t w, uint16_t oi, uint16_t part, fx_t t)
@@ -65,12 +79,16 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     const rt_scene *s = tr->scene;
     const rt_object *o = &s->obj[oi];
     const rt_material *m = &s->mat[o->material];
+    /* Read once: the frame keeps them, where m itself was rebuilt from
+     * the object's material index at every use. */
+    const fx_t kr = m->reflect, kt = m->transparency;
     /* From a small origin a hit below 2^30 cannot leave the range. */
-    fx_vec3 p = r->small && t < ((fx_t)1 << 30)
+    fx_vec3 p = FX_SOFT_MUL64 && FX_UBITS > 16 ? hit_point_soft(r, t)
+                : r->small && t < ((fx_t)1 << 30)
                     ? fx_v3_madd_d_near(r->o, r->d, t)
                     : fx_v3_madd_d(r->o, r->d, t);
     const fx_dir3 ng_out =
-        rt_normal(o, r, t, &p, part, m->reflect > 0 || m->transparency > 0);
+        rt_normal(o, r, t, &p, part, kr > 0 || kt > 0);
     fx_dir3 ng = ng_out;
     const int64_t dn = rt_dot_raw(r->d, ng);
     int outside = o->kind == RT_QUAD || dn <= 0;
@@ -89,10 +107,14 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     if (RT_HAS_TEXTURES && m->texture != RT_TEX_NONE)
         tex = rt_texel(m, o, rt_v3_madd_pow2(p, ng_out, RT_EPS_LOG2, 1));
     const rt_rgb base = tex ? m->color2 : m->color;
-    /* Where rays leaving on the ray's side start: made on first use. */
+    /* Where rays leaving on the ray's side start. Made here, not on
+     * first use: nearly every hit casts a shadow or a mirror ray, and the
+     * flag of a lazy one cost more than the few it saved. */
     const unsigned off = rt_origin_log2(o); /* 2^off: the offset */
-    fx_vec3 p_out = p;
-    int have_out = 0;
+    /* Most objects take RT_EPS: its shifts are then constants. */
+    const fx_vec3 p_out = off == RT_EPS_LOG2
+                              ? rt_v3_madd_pow2(p, ng, RT_EPS_LOG2, 0)
+                              : rt_v3_madd_pow2(p, ng, off, 0);
     unsigned skip_out = (o->convex && outside) ? oi : RT_NO_OBJECT;
 
     rt_rgb c = tr->amb[o->material][tex];
@@ -104,8 +126,6 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     /* Lights are seen from P_out, where their shadow rays start: a shadow
      * ray then ends at its light, and a surface through the light (a
      * light on a surface) is met only there, beyond t_max. */
-    if (!dark && n_lights > 0)
-        rt_out_point(&p_out, &have_out, ng, off);
     for (unsigned li = 0; !dark && li < n_lights; li++) {
         const rt_light *l = &s->light[li];
         fx_vec3 lv = fx_v3_sub(l->pos, p_out);
@@ -121,10 +141,9 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
             continue;
         rt_rgb lc =
             li == 0 ? tr->lit[o->material][tex] : rt_rgb_mul(base, l->color);
-        /* Lambert; a cosine up to 1 weighs kdl as rt_wmul (no call). */
-        rt_rgb_madd(&c, lc,
-                    rt_wmul_ok(ndl) ? rt_wmul_fast(kdl, ndl)
-                                    : fx_mul(kdl, ndl));
+        /* Lambert: fx_mul's value, which |kdl| <= 1 (the parser's ranges)
+         * keeps from saturating at any ndl (rt_wmul: no test). */
+        rt_rgb_madd(&c, lc, rt_wmul(kdl, ndl));
         fx_t ks;
         if (RT_HAS_SPECULAR && m->specular > 0 &&
             rt_highlight(m, nl, d_dot_n(r->d, n, dnn), ld, r->d,
@@ -135,32 +154,30 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
         return c;
 
     if (RT_HAS_REFLECTION) {
-        fx_t wr = rt_child_weight(w, m->reflect);
-        if (m->reflect > 0 && rt_worth_tracing(tr, wk, wr, depth + 1)) {
+        fx_t wr = rt_child_weight(w, kr);
+        if (kr > 0 && rt_worth_tracing(tr, wk, wr, depth + 1)) {
             rt_ray rr;
-            rt_out_point(&p_out, &have_out, ng, off);
             rt_ray_set(&rr, p_out,
                        rt_reflect_dir_dn(r->d, n, d_dot_n(r->d, n, dnn)));
             RT_COUNT(wk, reflection);
             rt_rgb_madd(&c, trace(tr, wk, &rr, depth + 1, wr, skip_out, oi),
-                        m->reflect);
+                        kr);
         }
     }
     if (RT_HAS_REFRACTION) {
-        fx_t wt = rt_child_weight(w, m->transparency);
-        if (m->transparency > 0 && rt_worth_tracing(tr, wk, wt, depth + 1)) {
+        fx_t wt = rt_child_weight(w, kt);
+        if (kt > 0 && rt_worth_tracing(tr, wk, wt, depth + 1)) {
             fx_t eta = outside ? m->ior_inv : m->ior;
             fx_dir3 td;
             rt_ray tr2;
             if (!rt_refract_dn(r->d, n, d_dot_n(r->d, n, dnn), eta, &td)) {
                 /* total internal reflection */
-                rt_out_point(&p_out, &have_out, ng, off);
                 rt_ray_set(&tr2, p_out,
                            rt_reflect_dir_dn(r->d, n, d_dot_n(r->d, n, dnn)));
                 RT_COUNT(wk, reflection);
                 rt_rgb_madd(&c,
                             trace(tr, wk, &tr2, depth + 1, wt, skip_out, oi),
-                            m->transparency);
+                            kt);
             } else {
                 unsigned skip_in =
                     (o->convex && (!outside || o->kind == RT_QUAD))
@@ -170,7 +187,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
                 RT_COUNT(wk, refraction);
                 rt_rgb_madd(&c,
                             trace(tr, wk, &tr2, depth + 1, wt, skip_in, oi),
-                            m->transparency);
+                            kt);
             }
         }
     }

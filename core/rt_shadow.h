@@ -72,7 +72,7 @@ static inline int rt_occluded(const rt_tracer *tr, rt_work *wk,
 }
 
 /* 1 if light li is hidden from the hit point: a shadow ray from p_out
- * (the hit point off its surface, rt_out_point) along unit ld, to the
+ * (the hit point off its surface, rt_origin_log2) along unit ld, to the
  * light at lv from p_out, ignoring object skip. */
 static inline int rt_in_shadow(const rt_tracer *tr, rt_work *wk, unsigned li,
                                fx_vec3 lv, fx_dir3 ld, fx_vec3 p_out,

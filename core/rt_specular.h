@@ -54,10 +54,9 @@ static inline int rt_highlight(const rt_material *m, int64_t nl, int64_t nd,
                      (2 * FX_UBITS - 16));
     if (rv <= rv_min)
         return 0;
-    /* The power is in [0, 1] (fx_powi): fx_mul's value (rt_colour.h). */
-    const fx_t pw = rt_powi(rv, m->shininess);
-    *k = rt_wmul_ok(pw) ? rt_wmul_fast(m->specular, pw)
-                        : fx_mul(m->specular, pw);
+    /* The power is in [0, 1] (fx_powi): fx_mul's value (rt_colour.h),
+     * which cannot saturate for such a weight (rt_wmul: no test). */
+    *k = rt_wmul(m->specular, rt_powi(rv, m->shininess));
     return 1;
 }
 
