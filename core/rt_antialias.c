@@ -113,20 +113,56 @@ static void pixel(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
             fx_to_u8((fx_t)(spp <= 1 ? sum[k] : (sum[k] + spp / 2) / spp));
 }
 
-/* sample() for the direction at cw's column, from the eye, whose
- * fx_v3_small the caller found once (rt_ray_set's fields). */
-RT_NOINLINE static rt_rgb walk_sample(const rt_tracer *tr, rt_work *wk,
-                                      const row_spans *rs,
-                                      const rt_cam_walk *cw, uint8_t small,
-                                      unsigned x)
+/* Pixels x0 <= x < x1 of row y in the background's bytes bg. */
+RT_NOINLINE static void put_background(uint8_t *row, rt_work *wk, const rt_options *o,
+                           unsigned y, int32_t x0, int32_t x1,
+                           const uint8_t bg[3])
 {
+    if (RT_STATS && wk->stats && x1 > x0)
+        wk->stats->primary += (unsigned)(x1 - x0);
+    for (int32_t x = x0; x < x1; x++)
+        rt_put_pixel(row, o, (unsigned)x, y, bg);
+}
+
+/* One sample per pixel: the columns outside lo..hi see the background
+ * (its bytes made once), and the camera rays of lo..hi are walked
+ * (rt_cam_walk), not each made afresh, in one ray whose origin and
+ * fx_v3_small are set once. Why: the per-pixel tests, calls and copies
+ * of a general loop cost more than the walk itself saves (#17). */
+static void row_1spp(const rt_tracer *tr, rt_work *wk, const row_spans *rs,
+                     const rt_cam_frame *cf, const rt_options *o,
+                     unsigned y, uint8_t *row)
+{
+    const int32_t w = (int32_t)o->width;
+    const int32_t lo = rs->lo > 0 ? rs->lo : 0;
+    const int32_t hi = rs->hi < w ? rs->hi : w - 1;
+    const rt_rgb bgc = tr->scene->background;
+    const uint8_t bg[3] = { fx_to_u8(bgc.r), fx_to_u8(bgc.g),
+                            fx_to_u8(bgc.b) }; /* as pixel() */
+    if (lo > hi) {
+        put_background(row, wk, o, y, 0, w, bg);
+        return;
+    }
+    put_background(row, wk, o, y, 0, lo, bg);
+    rt_cam_walk cw;
+    rt_cam_walk_init(&cw, cf, &rs->base[0], o->width, (unsigned)lo,
+                     (unsigned)hi);
     rt_ray r;
     r.o = tr->scene->cam.eye;
-    r.d = rt_cam_walk_dir(cw);
-    r.e = fx_d3_unit_err(r.d);
-    r.small = small;
-    RT_COUNT(wk, primary);
-    return rt_trace_camera(tr, wk, &r, &rs->hit, x);
+    r.small = (uint8_t)fx_v3_small(r.o);
+    for (int32_t x = lo;; x++) {
+        r.d = rt_cam_walk_dir(&cw);
+        r.e = fx_d3_unit_err(r.d);
+        RT_COUNT(wk, primary);
+        const rt_rgb c = rt_trace_camera(tr, wk, &r, &rs->hit, (unsigned)x);
+        const uint8_t rgb8[3] = { fx_to_u8(c.r), fx_to_u8(c.g),
+                                  fx_to_u8(c.b) }; /* as pixel() */
+        rt_put_pixel(row, o, (unsigned)x, y, rgb8);
+        if (x == hi)
+            break;
+        rt_cam_walk_step(&cw);
+    }
+    put_background(row, wk, o, y, hi + 1, w, bg);
 }
 
 void rt_aa_row(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
@@ -134,30 +170,8 @@ void rt_aa_row(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
 {
     row_spans rs;
     row_setup(&rs, tr, cf, o, y);
-    /* One sample per pixel: the camera rays of the columns lo..hi are
-     * walked (rt_cam_walk), not each made afresh. */
     if ((RT_HAS_SUPERSAMPLING ? cf->n : 1) == 1) {
-        const int32_t w = (int32_t)o->width;
-        const int32_t lo = rs.lo > 0 ? rs.lo : 0;
-        const int32_t hi = rs.hi < w ? rs.hi : w - 1;
-        const uint8_t small = (uint8_t)fx_v3_small(tr->scene->cam.eye);
-        rt_cam_walk cw; /* set up even for a row that hits nothing */
-        rt_cam_walk_init(&cw, cf, &rs.base[0], o->width,
-                         lo <= hi ? (unsigned)lo : 0u,
-                         lo <= hi ? (unsigned)hi : 0u);
-        for (int32_t x = 0; x < w; x++) {
-            rt_rgb c = tr->scene->background;
-            if (x >= lo && x <= hi) {
-                if (x > lo)
-                    rt_cam_walk_step(&cw);
-                c = walk_sample(tr, wk, &rs, &cw, small, (unsigned)x);
-            } else if (RT_STATS && wk->stats) {
-                wk->stats->primary++;
-            }
-            const uint8_t rgb8[3] = { fx_to_u8(c.r), fx_to_u8(c.g),
-                                      fx_to_u8(c.b) }; /* as pixel() */
-            rt_put_pixel(row, o, (unsigned)x, y, rgb8);
-        }
+        row_1spp(tr, wk, &rs, cf, o, y, row);
         return;
     }
     for (unsigned x = 0; x < o->width; x++) {
