@@ -31,7 +31,27 @@ typedef struct {
     int8_t all;    /* 1: no sphere culling (eye inside or near, or beyond
                       the range where the row geometry is exact enough) */
     int8_t side;   /* quads: +1 / -1 the sign den needs; 0: not a quad */
+    int8_t corners; /* quads: 1 if q holds its corners */
+    fx_vec3 q[4];  /* quads: the corners relative to the eye */
 } cull_obj;
+
+/* The corners of quad o relative to the eye e into q; 0 if one is 2^14
+ * units away or more (then no corner culling). */
+static int quad_corners(fx_vec3 q[4], const rt_object *o, fx_vec3 e)
+{
+    const fx_t *a = &o->a.x, *b = &o->b.x, *c = &o->c.x, *ev = &e.x;
+    int ok = 1;
+    for (int i = 0; i < 4; i++) {
+        fx_t *qi = &q[i].x;
+        for (int j = 0; j < 3; j++) {
+            const int64_t v = (int64_t)a[j] - ev[j] + ((i & 1) ? b[j] : 0) +
+                              ((i & 2) ? c[j] : 0);
+            ok &= v > -FX_INT(16384) && v < FX_INT(16384);
+            qi[j] = ok ? (fx_t)v : 0;
+        }
+    }
+    return ok;
+}
 
 static void cull_obj_set(cull_obj *k, const rt_object *o, const rt_scene *s,
                          const rt_cam_frame *cf)
@@ -46,6 +66,7 @@ static void cull_obj_set(cull_obj *k, const rt_object *o, const rt_scene *s,
     k->p = fx_v3(0, 0, 0);
     k->r = 0;
     k->pa = k->pb = k->pc = 0;
+    k->corners = 0;
     if (r < FX_INT(16384) && px > -FX_INT(16384) && px < FX_INT(16384) &&
         py > -FX_INT(16384) && py < FX_INT(16384) && pz > -FX_INT(16384) &&
         pz < FX_INT(16384)) {
@@ -59,6 +80,7 @@ static void cull_obj_set(cull_obj *k, const rt_object *o, const rt_scene *s,
         const int64_t raw = fx_pd_dot_diff_raw(o->a, s->cam.eye, o->n);
         fx_t num = fx_sat64((raw + ((int64_t)1 << (FX_UBITS - 1))) >>
                             FX_UBITS);
+        k->corners = (int8_t)quad_corners(k->q, o, s->cam.eye);
         if (num > 256 || num < -256) {
             k->side = num > 0 ? 1 : -1;
             k->pa = fx_d3_dot(cf->w, o->n);
@@ -108,6 +130,24 @@ static int row_interval(const cull_obj *k, const rt_cam_frame *cf,
     const fx_t sy = rp->sy;
     *lo = -S_INF;
     *hi = S_INF;
+    if (k->corners && sy < FX_INT(64) && sy > -FX_INT(64)) {
+        /* All four corners of a quad on one side of the row's plane, by
+         * a margin far beyond the rounding of h and of the rays: no ray
+         * of the row reaches it (a floor seen from above, in the rows
+         * between its far edge and the horizon). Cheaper than the
+         * quad's tests it saves at each of the row's pixels (#17). */
+        int above = 0, below = 0;
+        for (int i = 0; i < 4; i++) {
+            const fx_vec3 q = k->q[i];
+            const fx_t m = 1024 + fx_abs(q.x) / 64 + fx_abs(q.y) / 64 +
+                           fx_abs(q.z) / 64; /* each below 2^30 */
+            const fx_t h = fx_pd_dot(q, rp->nr);
+            above += h > m;
+            below += h < -m;
+        }
+        if (above == 4 || below == 4)
+            return 0;
+    }
     if (!k->all && sy < FX_INT(64) && sy > -FX_INT(64)) {
         fx_t h = fx_pd_dot(k->p, rp->nr);
         if (h >= k->r || h <= -k->r)
