@@ -36,8 +36,9 @@ typedef struct {
 } cull_obj;
 
 /* The corners of quad o relative to the eye e into q; 0 if one is 2^14
- * units away or more (then no corner culling). */
-static int quad_corners(fx_vec3 q[4], const rt_object *o, fx_vec3 e)
+ * units away or more (then no corner culling). Not inlined, nor
+ * corners_off below: once a row and quad, they would only add flash. */
+RT_NOINLINE static int quad_corners(fx_vec3 q[4], const rt_object *o, fx_vec3 e)
 {
     const fx_t *a = &o->a.x, *b = &o->b.x, *c = &o->c.x, *ev = &e.x;
     int ok = 1;
@@ -113,6 +114,22 @@ static void row_plane_set(row_plane *rp, const rt_cam_frame *cf, int32_t k)
     rp->nr = fx_d3_cross_unit(fx_d3_raw(rp->f), fx_d3_raw(cf->right));
 }
 
+/* 1 if the four corners q lie on one side of the plane through the eye
+ * with unit normal nr, by a margin far beyond the rounding of h and of
+ * the rays. */
+RT_NOINLINE static int corners_off(const fx_vec3 q[4], fx_dir3 nr)
+{
+    int above = 0, below = 0;
+    for (int i = 0; i < 4; i++) {
+        const fx_t m = 1024 + fx_abs(q[i].x) / 64 + fx_abs(q[i].y) / 64 +
+                       fx_abs(q[i].z) / 64; /* each below 2^30 */
+        const fx_t h = fx_pd_dot(q[i], nr);
+        above += h > m;
+        below += h < -m;
+    }
+    return above == 4 || below == 4;
+}
+
 /* tan(phi + sg * alpha) from the two tangents; +-S_INF past 90 degrees. */
 static int64_t tan_sum(fx_t tp, fx_t ta, int sg)
 {
@@ -131,21 +148,12 @@ static int row_interval(const cull_obj *k, const rt_cam_frame *cf,
     *lo = -S_INF;
     *hi = S_INF;
     if (k->corners && sy < FX_INT(64) && sy > -FX_INT(64)) {
-        /* All four corners of a quad on one side of the row's plane, by
-         * a margin far beyond the rounding of h and of the rays: no ray
-         * of the row reaches it (a floor seen from above, in the rows
-         * between its far edge and the horizon). Cheaper than the
-         * quad's tests it saves at each of the row's pixels (#17). */
-        int above = 0, below = 0;
-        for (int i = 0; i < 4; i++) {
-            const fx_vec3 q = k->q[i];
-            const fx_t m = 1024 + fx_abs(q.x) / 64 + fx_abs(q.y) / 64 +
-                           fx_abs(q.z) / 64; /* each below 2^30 */
-            const fx_t h = fx_pd_dot(q, rp->nr);
-            above += h > m;
-            below += h < -m;
-        }
-        if (above == 4 || below == 4)
+        /* All four corners of a quad on one side of the row's plane
+         * (corners_off): no ray of the row reaches it (a floor seen
+         * from above, in the rows between its far edge and the
+         * horizon). Cheaper than the quad's tests it saves at each of
+         * the row's pixels (#17). */
+        if (corners_off(k->q, rp->nr))
             return 0;
     }
     if (!k->all && sy < FX_INT(64) && sy > -FX_INT(64)) {
