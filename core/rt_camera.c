@@ -2,7 +2,8 @@
 /* rt_camera: the camera frame of a render (rt_camera.h). */
 #include "rt_camera.h"
 
-void rt_cam_setup(rt_cam_frame *cf, const rt_scene *s, unsigned width,
+/* Once a render: compiled for size (RT_COLD). */
+RT_COLD void rt_cam_setup(rt_cam_frame *cf, const rt_scene *s, unsigned width,
                   unsigned height, unsigned n)
 {
     /* look - eye in 64 bits: exact however far apart the two are. */
