@@ -124,12 +124,37 @@ RT_NOINLINE static void put_background(uint8_t *row, rt_work *wk, const rt_optio
         rt_put_pixel(row, o, (unsigned)x, y, bg);
 }
 
+/* A row of at most this many spans is walked with only the spans that
+ * cover each column handed to rt_trace_camera (active_spans). */
+#define ACTIVE_MAX 16
+
+/* Into *act, in object order, the spans of all[0..n) that cover column
+ * x; returns the next column where that set changes (INT32_MAX: none).
+ * Why: rt_nearest_camera tests every span's columns at every pixel; the
+ * set changes only at the spans' ends, a few times a row (#17). */
+static int32_t active_spans(rt_row_spans *act, const rt_span *all,
+                            unsigned n, int32_t x)
+{
+    int32_t next = INT32_MAX;
+    unsigned c = 0;
+    for (unsigned k = 0; k < n; k++) {
+        if (all[k].x0 > x) {
+            next = all[k].x0 < next ? all[k].x0 : next;
+        } else if (all[k].x1 >= x) {
+            act->span[c++] = all[k];
+            next = all[k].x1 < next ? all[k].x1 + 1 : next;
+        }
+    }
+    act->count = c;
+    return next;
+}
+
 /* One sample per pixel: the columns outside lo..hi see the background
  * (its bytes made once), and the camera rays of lo..hi are walked
  * (rt_cam_walk), not each made afresh, in one ray whose origin and
  * fx_v3_small are set once. Why: the per-pixel tests, calls and copies
  * of a general loop cost more than the walk itself saves (#17). */
-static void row_1spp(const rt_tracer *tr, rt_work *wk, const row_spans *rs,
+static void row_1spp(const rt_tracer *tr, rt_work *wk, row_spans *rs,
                      const rt_cam_frame *cf, const rt_options *o,
                      unsigned y, uint8_t *row)
 {
@@ -150,11 +175,27 @@ static void row_1spp(const rt_tracer *tr, rt_work *wk, const row_spans *rs,
     rt_ray r;
     r.o = tr->scene->cam.eye;
     r.small = (uint8_t)fx_v3_small(r.o);
+    /* With few spans rs->hit holds only those covering x (all[] has
+     * them all); a column none covers needs no ray: rt_trace_camera
+     * would return the background. */
+    rt_span all[ACTIVE_MAX];
+    const unsigned n_all = rs->hit.count;
+    int32_t next = INT32_MAX;
+    if (n_all <= ACTIVE_MAX) {
+        for (unsigned k = 0; k < n_all; k++)
+            all[k] = rs->hit.span[k];
+        next = lo;
+    }
     for (int32_t x = lo;; x++) {
-        r.d = rt_cam_walk_dir(&cw);
-        r.e = fx_d3_unit_err(r.d);
+        if (x == next)
+            next = active_spans(&rs->hit, all, n_all, x);
+        rt_rgb c = bgc;
         RT_COUNT(wk, primary);
-        const rt_rgb c = rt_trace_camera(tr, wk, &r, &rs->hit, (unsigned)x);
+        if (rs->hit.count != 0) {
+            r.d = rt_cam_walk_dir(&cw);
+            r.e = fx_d3_unit_err(r.d);
+            c = rt_trace_camera(tr, wk, &r, &rs->hit, (unsigned)x);
+        }
         const uint8_t rgb8[3] = { fx_to_u8(c.r), fx_to_u8(c.g),
                                   fx_to_u8(c.b) }; /* as pixel() */
         rt_put_pixel(row, o, (unsigned)x, y, rgb8);
