@@ -131,8 +131,9 @@ RT_NOINLINE static void put_background(uint8_t *row, rt_work *wk, const rt_optio
 /* Into *act, in object order, the spans of all[0..n) that cover column
  * x; returns the next column where that set changes (INT32_MAX: none).
  * Why: rt_nearest_camera tests every span's columns at every pixel; the
- * set changes only at the spans' ends, a few times a row (#17). */
-static int32_t active_spans(rt_row_spans *act, const rt_span *all,
+ * set changes only at the spans' ends, a few times a row (#17). Out of
+ * line: so rarely called, it would only add flash. */
+RT_NOINLINE static int32_t active_spans(rt_row_spans *act, const rt_span *all,
                             unsigned n, int32_t x)
 {
     int32_t next = INT32_MAX;

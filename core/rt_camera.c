@@ -71,3 +71,9 @@ RT_COLD void rt_cam_walk_init(rt_cam_walk *cw, const rt_cam_frame *cf,
         cw->inc[1][c] = inc[1][c] * m;
     }
 }
+
+RT_COLD fx_dir3 rt_cam_walk_dir_wide(const rt_cam_walk *cw)
+{
+    const int fb = cw->fbits;
+    return fx_d3_normalize64(cw->v[0] >> fb, cw->v[1] >> fb, cw->v[2] >> fb);
+}

@@ -124,15 +124,18 @@ static inline void rt_cam_walk_step(rt_cam_walk *cw)
     cw->v[2] += inc[2];
 }
 
+/* rt_cam_walk_dir of a wide walk: out of line, as views that wide are
+ * rare and its variable 64-bit shifts long. */
+fx_dir3 rt_cam_walk_dir_wide(const rt_cam_walk *cw);
+
 /* The unit direction at *cw's column: rt_cam_dir's. */
 static inline fx_dir3 rt_cam_walk_dir(const rt_cam_walk *cw)
 {
-    const int fb = cw->fbits;
     if (!cw->wide)
         return fx_d3_normalize(fx_v3((fx_t)(cw->v[0] >> 32),
                                      (fx_t)(cw->v[1] >> 32),
                                      (fx_t)(cw->v[2] >> 32)));
-    return fx_d3_normalize64(cw->v[0] >> fb, cw->v[1] >> fb, cw->v[2] >> fb);
+    return rt_cam_walk_dir_wide(cw);
 }
 
 #endif /* RT_CAMERA_H */
