@@ -38,18 +38,22 @@ typedef struct {
 /* The corners of quad o relative to the eye e into q; 0 if one is 2^14
  * units away or more (then no corner culling). Not inlined, nor
  * corners_off below: once a row and quad, they would only add flash. */
-RT_NOINLINE static int quad_corners(fx_vec3 q[4], const rt_object *o, fx_vec3 e)
+RT_NOINLINE static int quad_corners(fx_vec3 q[4], const rt_object *o,
+                                    fx_vec3 e)
 {
-    const fx_t *a = &o->a.x, *b = &o->b.x, *c = &o->c.x, *ev = &e.x;
     int ok = 1;
     for (int i = 0; i < 4; i++) {
-        fx_t *qi = &q[i].x;
-        for (int j = 0; j < 3; j++) {
-            const int64_t v = (int64_t)a[j] - ev[j] + ((i & 1) ? b[j] : 0) +
-                              ((i & 2) ? c[j] : 0);
-            ok &= v > -FX_INT(16384) && v < FX_INT(16384);
-            qi[j] = ok ? (fx_t)v : 0;
-        }
+        const int32_t u = i & 1, v = i >> 1; /* the corner a + u b + v c */
+        const int64_t x = (int64_t)o->a.x - e.x + (int64_t)u * o->b.x +
+                          (int64_t)v * o->c.x;
+        const int64_t y = (int64_t)o->a.y - e.y + (int64_t)u * o->b.y +
+                          (int64_t)v * o->c.y;
+        const int64_t z = (int64_t)o->a.z - e.z + (int64_t)u * o->b.z +
+                          (int64_t)v * o->c.z;
+        ok &= x > -FX_INT(16384) && x < FX_INT(16384) &&
+              y > -FX_INT(16384) && y < FX_INT(16384) &&
+              z > -FX_INT(16384) && z < FX_INT(16384);
+        q[i] = ok ? fx_v3((fx_t)x, (fx_t)y, (fx_t)z) : fx_v3(0, 0, 0);
     }
     return ok;
 }
