@@ -113,20 +113,98 @@ static void pixel(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
             fx_to_u8((fx_t)(spp <= 1 ? sum[k] : (sum[k] + spp / 2) / spp));
 }
 
-/* sample() for the direction at cw's column, from the eye, whose
- * fx_v3_small the caller found once (rt_ray_set's fields). */
-RT_NOINLINE static rt_rgb walk_sample(const rt_tracer *tr, rt_work *wk,
-                                      const row_spans *rs,
-                                      const rt_cam_walk *cw, uint8_t small,
-                                      unsigned x)
+/* Pixels x0 <= x < x1 of row y in the background's bytes bg. */
+RT_NOINLINE static void put_background(uint8_t *row, rt_work *wk, const rt_options *o,
+                           unsigned y, int32_t x0, int32_t x1,
+                           const uint8_t bg[3])
 {
+    if (RT_STATS && wk->stats && x1 > x0)
+        wk->stats->primary += (unsigned)(x1 - x0);
+    for (int32_t x = x0; x < x1; x++)
+        rt_put_pixel(row, o, (unsigned)x, y, bg);
+}
+
+/* A row of at most this many spans is walked with only the spans that
+ * cover each column handed to rt_trace_camera (active_spans). */
+#define ACTIVE_MAX 16
+
+/* Into *act, in object order, the spans of all[0..n) that cover column
+ * x; returns the next column where that set changes (INT32_MAX: none).
+ * Why: rt_nearest_camera tests every span's columns at every pixel; the
+ * set changes only at the spans' ends, a few times a row (#17). Out of
+ * line: so rarely called, it would only add flash. */
+RT_NOINLINE static int32_t active_spans(rt_row_spans *act, const rt_span *all,
+                            unsigned n, int32_t x)
+{
+    int32_t next = INT32_MAX;
+    unsigned c = 0;
+    for (unsigned k = 0; k < n; k++) {
+        if (all[k].x0 > x) {
+            next = all[k].x0 < next ? all[k].x0 : next;
+        } else if (all[k].x1 >= x) {
+            act->span[c++] = all[k];
+            next = all[k].x1 < next ? all[k].x1 + 1 : next;
+        }
+    }
+    act->count = c;
+    return next;
+}
+
+/* One sample per pixel: the columns outside lo..hi see the background
+ * (its bytes made once), and the camera rays of lo..hi are walked
+ * (rt_cam_walk), not each made afresh, in one ray whose origin and
+ * fx_v3_small are set once. Why: the per-pixel tests, calls and copies
+ * of a general loop cost more than the walk itself saves (#17). */
+static void row_1spp(const rt_tracer *tr, rt_work *wk, row_spans *rs,
+                     const rt_cam_frame *cf, const rt_options *o,
+                     unsigned y, uint8_t *row)
+{
+    const int32_t w = (int32_t)o->width;
+    const int32_t lo = rs->lo > 0 ? rs->lo : 0;
+    const int32_t hi = rs->hi < w ? rs->hi : w - 1;
+    const rt_rgb bgc = tr->scene->background;
+    const uint8_t bg[3] = { fx_to_u8(bgc.r), fx_to_u8(bgc.g),
+                            fx_to_u8(bgc.b) }; /* as pixel() */
+    if (lo > hi) {
+        put_background(row, wk, o, y, 0, w, bg);
+        return;
+    }
+    put_background(row, wk, o, y, 0, lo, bg);
+    rt_cam_walk cw;
+    rt_cam_walk_init(&cw, cf, &rs->base[0], o->width, (unsigned)lo,
+                     (unsigned)hi);
     rt_ray r;
     r.o = tr->scene->cam.eye;
-    r.d = rt_cam_walk_dir(cw);
-    r.e = fx_d3_unit_err(r.d);
-    r.small = small;
-    RT_COUNT(wk, primary);
-    return rt_trace_camera(tr, wk, &r, &rs->hit, x);
+    r.small = (uint8_t)fx_v3_small(r.o);
+    /* With few spans rs->hit holds only those covering x (all[] has
+     * them all); a column none covers needs no ray: rt_trace_camera
+     * would return the background. */
+    rt_span all[ACTIVE_MAX];
+    const unsigned n_all = rs->hit.count;
+    int32_t next = INT32_MAX;
+    if (n_all <= ACTIVE_MAX) {
+        for (unsigned k = 0; k < n_all; k++)
+            all[k] = rs->hit.span[k];
+        next = lo;
+    }
+    for (int32_t x = lo;; x++) {
+        if (x == next)
+            next = active_spans(&rs->hit, all, n_all, x);
+        rt_rgb c = bgc;
+        RT_COUNT(wk, primary);
+        if (rs->hit.count != 0) {
+            r.d = rt_cam_walk_dir(&cw);
+            r.e = fx_d3_unit_err(r.d);
+            c = rt_trace_camera(tr, wk, &r, &rs->hit, (unsigned)x);
+        }
+        const uint8_t rgb8[3] = { fx_to_u8(c.r), fx_to_u8(c.g),
+                                  fx_to_u8(c.b) }; /* as pixel() */
+        rt_put_pixel(row, o, (unsigned)x, y, rgb8);
+        if (x == hi)
+            break;
+        rt_cam_walk_step(&cw);
+    }
+    put_background(row, wk, o, y, hi + 1, w, bg);
 }
 
 void rt_aa_row(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
@@ -134,30 +212,8 @@ void rt_aa_row(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
 {
     row_spans rs;
     row_setup(&rs, tr, cf, o, y);
-    /* One sample per pixel: the camera rays of the columns lo..hi are
-     * walked (rt_cam_walk), not each made afresh. */
     if ((RT_HAS_SUPERSAMPLING ? cf->n : 1) == 1) {
-        const int32_t w = (int32_t)o->width;
-        const int32_t lo = rs.lo > 0 ? rs.lo : 0;
-        const int32_t hi = rs.hi < w ? rs.hi : w - 1;
-        const uint8_t small = (uint8_t)fx_v3_small(tr->scene->cam.eye);
-        rt_cam_walk cw; /* set up even for a row that hits nothing */
-        rt_cam_walk_init(&cw, cf, &rs.base[0], o->width,
-                         lo <= hi ? (unsigned)lo : 0u,
-                         lo <= hi ? (unsigned)hi : 0u);
-        for (int32_t x = 0; x < w; x++) {
-            rt_rgb c = tr->scene->background;
-            if (x >= lo && x <= hi) {
-                if (x > lo)
-                    rt_cam_walk_step(&cw);
-                c = walk_sample(tr, wk, &rs, &cw, small, (unsigned)x);
-            } else if (RT_STATS && wk->stats) {
-                wk->stats->primary++;
-            }
-            const uint8_t rgb8[3] = { fx_to_u8(c.r), fx_to_u8(c.g),
-                                      fx_to_u8(c.b) }; /* as pixel() */
-            rt_put_pixel(row, o, (unsigned)x, y, rgb8);
-        }
+        row_1spp(tr, wk, &rs, cf, o, y, row);
         return;
     }
     for (unsigned x = 0; x < o->width; x++) {

@@ -2,7 +2,8 @@
 /* rt_camera: the camera frame of a render (rt_camera.h). */
 #include "rt_camera.h"
 
-void rt_cam_setup(rt_cam_frame *cf, const rt_scene *s, unsigned width,
+/* Once a render: compiled for size (RT_COLD). */
+RT_COLD void rt_cam_setup(rt_cam_frame *cf, const rt_scene *s, unsigned width,
                   unsigned height, unsigned n)
 {
     /* look - eye in 64 bits: exact however far apart the two are. */
@@ -24,11 +25,11 @@ void rt_cam_setup(rt_cam_frame *cf, const rt_scene *s, unsigned width,
     cf->fbits = fb > 30 ? 30 : (fb < 2 ? 2 : fb);
 }
 
-/* 1 if |v| stays below 2^(31 + fb): v >> fb fits 32 bits. */
+/* 1 if v >> fb is an int32 above INT32_MIN (rt_cam_walk_dir). */
 static int walk_fits(int64_t v, int fb)
 {
     const int64_t lim = (int64_t)1 << (31 + fb);
-    return v > -lim && v < lim;
+    return v >= ((int64_t)1 << fb) - lim && v < lim;
 }
 
 /* Once a row: compiled for size (RT_COLD). */
@@ -49,9 +50,9 @@ RT_COLD void rt_cam_walk_init(rt_cam_walk *cw, const rt_cam_frame *cf,
     const int32_t rv[3] = { cf->right.x, cf->right.y, cf->right.z };
     int64_t v[3], inc[2][3];
     int fits = 1;
-    cw->mod = (uint32_t)1 << sh;
-    cw->frac = (uint32_t)(2 * cf->step) & (cw->mod - 1u);
-    cw->rem = (uint32_t)((int64_t)k0 * cf->step + (up >> 1)) & (cw->mod - 1u);
+    const uint32_t mask = ((uint32_t)1 << sh) - 1u;
+    cw->frac = ((uint32_t)(2 * cf->step) & mask) << fb;
+    cw->rem = ((uint32_t)((int64_t)k0 * cf->step + (up >> 1)) & mask) << fb;
     for (int c = 0; c < 3; c++) {
         /* sx is monotonic along the row: the ends bound every v. */
         const int64_t v1 = bv[c] + fx_imul64(rv[c], s1) + h;
@@ -69,4 +70,10 @@ RT_COLD void rt_cam_walk_init(rt_cam_walk *cw, const rt_cam_frame *cf,
         cw->inc[0][c] = inc[0][c] * m;
         cw->inc[1][c] = inc[1][c] * m;
     }
+}
+
+RT_COLD fx_dir3 rt_cam_walk_dir_wide(const rt_cam_walk *cw)
+{
+    const int fb = cw->fbits;
+    return fx_d3_normalize64(cw->v[0] >> fb, cw->v[1] >> fb, cw->v[2] >> fb);
 }

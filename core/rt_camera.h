@@ -94,13 +94,15 @@ static inline fx_dir3 rt_cam_dir(const rt_cam_frame *cf, const rt_cam_ray *b,
  * its rounding says which), and each exact sum v = b + right sx + h by
  * right d or right (d + 1). v is kept times 2^(32 - fbits) where that
  * fits (views narrower than about 120 degrees): its high word is then
- * v >> fbits; else (wide) as it is. */
+ * v >> fbits, an int32 above INT32_MIN, which fx_d3_normalize takes as
+ * fx_d3_normalize64 would, without its range tests; else (wide) as it
+ * is. The remainder is kept times 2^fbits, at the top of its word: the
+ * carry is the word's own. */
 typedef struct {
     int64_t v[3];      /* v, times 2^(32 - fbits) unless wide */
     int64_t inc[2][3]; /* its steps: right d and right (d + 1), the same */
-    uint32_t rem;      /* (k step + 2^(sh-1)) mod 2^sh, sh = 32 - fbits */
-    uint32_t frac;     /* (2 step) mod 2^sh */
-    uint32_t mod;      /* 2^sh */
+    uint32_t rem;      /* (k step + 2^(sh-1)) mod 2^sh, times 2^fbits */
+    uint32_t frac;     /* (2 step) mod 2^sh, times 2^fbits (sh = 32 - fb) */
     int wide;          /* v is not scaled: shift it by fbits */
     int fbits;
 } rt_cam_walk;
@@ -114,23 +116,26 @@ void rt_cam_walk_init(rt_cam_walk *cw, const rt_cam_frame *cf,
 /* Moves *cw one column right (never past the x1 it was set up for). */
 static inline void rt_cam_walk_step(rt_cam_walk *cw)
 {
-    cw->rem += cw->frac;
-    const unsigned carry = cw->rem >= cw->mod;
-    if (carry)
-        cw->rem -= cw->mod;
-    cw->v[0] += cw->inc[carry][0];
-    cw->v[1] += cw->inc[carry][1];
-    cw->v[2] += cw->inc[carry][2];
+    const uint32_t rem = cw->rem + cw->frac;
+    const int64_t *inc = cw->inc[rem < cw->frac]; /* the carry */
+    cw->rem = rem;
+    cw->v[0] += inc[0];
+    cw->v[1] += inc[1];
+    cw->v[2] += inc[2];
 }
+
+/* rt_cam_walk_dir of a wide walk: out of line, as views that wide are
+ * rare and its variable 64-bit shifts long. */
+fx_dir3 rt_cam_walk_dir_wide(const rt_cam_walk *cw);
 
 /* The unit direction at *cw's column: rt_cam_dir's. */
 static inline fx_dir3 rt_cam_walk_dir(const rt_cam_walk *cw)
 {
-    const int fb = cw->fbits;
     if (!cw->wide)
-        return fx_d3_normalize64(cw->v[0] >> 32, cw->v[1] >> 32,
-                                 cw->v[2] >> 32);
-    return fx_d3_normalize64(cw->v[0] >> fb, cw->v[1] >> fb, cw->v[2] >> fb);
+        return fx_d3_normalize(fx_v3((fx_t)(cw->v[0] >> 32),
+                                     (fx_t)(cw->v[1] >> 32),
+                                     (fx_t)(cw->v[2] >> 32)));
+    return rt_cam_walk_dir_wide(cw);
 }
 
 #endif /* RT_CAMERA_H */

@@ -34,7 +34,8 @@ static int closed(const rt_object *o)
            (o->kind == RT_CONE && (o->caps & RT_CAP_BOTTOM));
 }
 
-void rt_sealed_find(rt_sealed *sl, const rt_scene *s, int shadows)
+/* Once a render: compiled for size (RT_COLD). */
+RT_COLD void rt_sealed_find(rt_sealed *sl, const rt_scene *s, int shadows)
 {
     memset(sl->alone, 0, sizeof sl->alone);
     memset(sl->dark, 0, sizeof sl->dark);
