@@ -82,6 +82,10 @@ fx_t fx_recip(fx_t a)
     return sat_signed(q, a < 0);
 }
 
+const uint8_t fx_ctz_table[32] = {
+    0,  1,  28, 2,  29, 14, 24, 3, 30, 22, 20, 15, 25, 17, 4,  8,
+    31, 27, 13, 23, 21, 19, 16, 7, 26, 12, 18, 6,  11, 5,  10, 9};
+
 /* Out of line the products are summed by columns instead (#17): ah bl
  * plus the top of al bl, then al bh plus the low half of that, each
  * below 2^32, so no carry is needed and no 64-bit register pair ties the

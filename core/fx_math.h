@@ -228,10 +228,18 @@ static inline int fx_clz32(uint32_t x)
 #endif
 }
 
-/* Number of trailing zero bits of x (0..31); exact. x must not be 0. */
+/* fx_ctz32's table on ARMv6-M (fx_math.c). */
+extern const uint8_t fx_ctz_table[32];
+
+/* Number of trailing zero bits of x (0..31); exact. x must not be 0. On
+ * ARMv6-M (FX_SOFT_MUL64), which has no CLZ or RBIT, __builtin_ctz is a
+ * library call of 18 instructions: there the lowest set bit times a de
+ * Bruijn sequence puts a distinct 5-bit index in the top bits (#17). */
 static inline int fx_ctz32(uint32_t x)
 {
 #if defined(__GNUC__)
+    if (FX_SOFT_MUL64)
+        return fx_ctz_table[((x & (0u - x)) * 0x077CB531u) >> 27];
     return __builtin_ctz(x);
 #else
     return 31 - fx_clz32(x & (0u - x));
