@@ -213,10 +213,25 @@ static inline fx_t fx_from_q32(int64_t q)
     return r == FX_MAX ? r : r + (fx_t)(((uint32_t)q >> 15) & 1);
 }
 
-/* Number of leading zero bits of x (0..31); exact. x must not be 0. */
+/* fx_clz32's and fx_ctz32's tables on ARMv6-M (fx_math.c). */
+extern const uint8_t fx_clz_table[32], fx_ctz_table[32];
+
+/* Number of leading zero bits of x (0..31); exact. x must not be 0. On
+ * ARMv6-M (FX_SOFT_MUL64), which has no CLZ, __builtin_clz is a library
+ * call of 19 instructions: there x with every bit below its top one set,
+ * 2^(32 - clz) - 1, times a de Bruijn constant puts a distinct 5-bit
+ * index in the top bits (#17). */
 static inline int fx_clz32(uint32_t x)
 {
 #if defined(__GNUC__)
+    if (FX_SOFT_MUL64) {
+        x |= x >> 1;
+        x |= x >> 2;
+        x |= x >> 4;
+        x |= x >> 8;
+        x |= x >> 16;
+        return fx_clz_table[(x * 0x07C4ACDDu) >> 27];
+    }
     return __builtin_clz(x); /* one instruction where the core has CLZ */
 #else
     int n = 0;
@@ -228,13 +243,10 @@ static inline int fx_clz32(uint32_t x)
 #endif
 }
 
-/* fx_ctz32's table on ARMv6-M (fx_math.c). */
-extern const uint8_t fx_ctz_table[32];
-
 /* Number of trailing zero bits of x (0..31); exact. x must not be 0. On
  * ARMv6-M (FX_SOFT_MUL64), which has no CLZ or RBIT, __builtin_ctz is a
  * library call of 18 instructions: there the lowest set bit times a de
- * Bruijn sequence puts a distinct 5-bit index in the top bits (#17). */
+ * Bruijn constant puts a distinct 5-bit index in the top bits (#17). */
 static inline int fx_ctz32(uint32_t x)
 {
 #if defined(__GNUC__)
