@@ -350,7 +350,7 @@ static inline int64_t fx_floor_div(int64_t n, fx_t d, uint32_t rcp,
         *rem = (fx_t)r;
         return q;
     }
-    int32_t q = (int32_t)((n * (int64_t)rcp) >> 32);
+    int32_t q = (int32_t)(fx_iumul64((int32_t)n, rcp) >> 32);
     uint32_t r = (uint32_t)n - (uint32_t)q * (uint32_t)d;
     if (r >= (uint32_t)d) {
         if (n >= 0) {
