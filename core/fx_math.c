@@ -108,13 +108,7 @@ int64_t fx_imul64_call(int32_t a, int32_t b)
 
 int64_t fx_iumul64_call(int32_t a, uint32_t b)
 {
-    int32_t ah = a >> 16;
-    uint32_t al = (uint32_t)a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
-    uint32_t ll = al * bl;
-    int32_t t = ah * (int32_t)bl + (int32_t)(ll >> 16);
-    uint32_t u = al * bh + ((uint32_t)t & 0xFFFFu);
-    uint32_t hi = (uint32_t)(ah * (int32_t)bh + (t >> 16)) + (u >> 16);
-    return (int64_t)fx_pair64(hi, (u << 16) | (ll & 0xFFFFu));
+    return fx_iumul64_soft(a, b); /* the same column form */
 }
 
 uint64_t fx_umul64_call(uint32_t a, uint32_t b)
