@@ -54,7 +54,7 @@ static inline fx_t fx_sat64(int64_t v)
 /* 1 where the core has no 32x32->64 multiply (Cortex-M0, M0+ and M1:
  * ARMv6-M). There the compiler calls a 64x64 library multiply for every
  * 64-bit product, about 45 instructions with the call; the products
- * below, from four 16x16 multiplies, give the same bits in about 24 (as
+ * below, from four 16x16 multiplies, give the same bits in about 26 (as
  * a call). Elsewhere they are the one-instruction product. */
 #if defined(__ARM_ARCH_6M__)
 #define FX_SOFT_MUL64 1
