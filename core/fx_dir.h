@@ -155,10 +155,19 @@ fx_dir3 fx_d3_normalize64(int64_t x, int64_t y, int64_t z);
 /* Unit vector along v (any scale, as fx_d3_normalize64). */
 fx_dir3 fx_d3_normalize(fx_vec3 v);
 
-/* One component of fx_d3_renorm: c (1 - e / 2), kept within +-1. */
+/* One component of fx_d3_renorm: c (1 - e / 2), kept within +-1. On the
+ * M0, with |e| <= 2^(FX_UBITS - 15) and |c| < 2^31, c e = ch e 2^16 + cl
+ * e in two 32-bit products (cl e within +-2^(FX_UBITS + 1)); the rounding
+ * term is a multiple of 2^16, so the shift splits exactly (#17). */
 static inline int32_t fx_renorm_c(int32_t c, int32_t e)
 {
-    int32_t v = c - (int32_t)((fx_imul64(c, e) + FX_UONE) >> (FX_UBITS + 1));
+    int32_t p;
+    if (FX_SOFT_MUL64)
+        p = ((c >> 16) * e + (((int32_t)((uint32_t)c & 0xFFFFu) * e) >> 16) +
+             (FX_UONE >> 16)) >> (FX_UBITS - 15);
+    else
+        p = (int32_t)((fx_imul64(c, e) + FX_UONE) >> (FX_UBITS + 1));
+    int32_t v = c - p;
     return v > FX_UONE ? FX_UONE : (v < -FX_UONE ? -FX_UONE : v);
 }
 

@@ -54,46 +54,66 @@ static inline fx_t fx_sat64(int64_t v)
 /* 1 where the core has no 32x32->64 multiply (Cortex-M0, M0+ and M1:
  * ARMv6-M). There the compiler calls a 64x64 library multiply for every
  * 64-bit product, about 45 instructions with the call; the products
- * below, from four 16x16 multiplies inline, give the same bits in about
- * 17. Elsewhere they are the one-instruction product. */
+ * below, from four 16x16 multiplies, give the same bits in about 26 (as
+ * a call). Elsewhere they are the one-instruction product. */
 #if defined(__ARM_ARCH_6M__)
 #define FX_SOFT_MUL64 1
 #else
 #define FX_SOFT_MUL64 0
 #endif
 
-/* hh 2^32 + mid 2^16 + ll, in wrapping unsigned arithmetic: the exact
- * product the callers below assemble (it fits int64). */
-static inline int64_t fx_join64(int64_t hh, int64_t mid, uint32_t ll)
+/* hi 2^32 + lo, as the register pair it is. */
+static inline uint64_t fx_pair64(uint32_t hi, uint32_t lo)
 {
-    return (int64_t)(((uint64_t)hh << 32) + ((uint64_t)mid << 16) + ll);
+    return ((uint64_t)hi << 32) | lo;
+}
+
+/* m 2^16 for a signed 32-bit m, mod 2^64: its two words by two shifts
+ * (a 64-bit shift of a widened m costs twice that on the M0). */
+static inline uint64_t fx_mid64(int32_t m)
+{
+    return fx_pair64((uint32_t)(m >> 16), (uint32_t)m << 16);
 }
 
 /* a * b, exact, from 16-bit halves (the low halves unsigned): each of the
- * four partial products fits 32 bits. */
+ * four partial products fits 32 bits, and the two middle ones are added
+ * to the pair hh:ll by adds and adcs (#17: 24 instructions as a call on
+ * the M0, 41 with a 64-bit middle sum). The sum is the product mod
+ * 2^64, which fits int64. */
 static inline int64_t fx_imul64_soft(int32_t a, int32_t b)
 {
     int32_t ah = a >> 16, bh = b >> 16;
     uint32_t al = (uint32_t)a & 0xFFFFu, bl = (uint32_t)b & 0xFFFFu;
-    int64_t mid = (int64_t)(ah * (int32_t)bl) + (int64_t)((int32_t)al * bh);
-    return fx_join64(ah * bh, mid, al * bl);
+    uint64_t p = fx_pair64((uint32_t)(ah * bh), al * bl);
+    p += fx_mid64(ah * (int32_t)bl);
+    p += fx_mid64((int32_t)al * bh);
+    return (int64_t)p;
 }
 
-/* a * b for an unsigned b below 2^32, exact, as fx_imul64_soft. */
+/* a * b for an unsigned b below 2^32, exact, from the same four partial
+ * products summed by columns (as fx_imul64_call, fx_math.c): ah bl plus
+ * the top of al bl, then al bh plus the low half of that, each within 32
+ * bits, so no carry is needed. Inline this form does better than the
+ * pairs for this product, not for the other two (seed, M0). */
 static inline int64_t fx_iumul64_soft(int32_t a, uint32_t b)
 {
     int32_t ah = a >> 16;
     uint32_t al = (uint32_t)a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
-    int64_t mid = (int64_t)(ah * (int32_t)bl) + (int64_t)(al * bh);
-    return fx_join64(ah * (int32_t)bh, mid, al * bl);
+    uint32_t ll = al * bl;
+    int32_t t = ah * (int32_t)bl + (int32_t)(ll >> 16);
+    uint32_t u = al * bh + ((uint32_t)t & 0xFFFFu);
+    uint32_t hi = (uint32_t)(ah * (int32_t)bh + (t >> 16)) + (u >> 16);
+    return (int64_t)fx_pair64(hi, (u << 16) | (ll & 0xFFFFu));
 }
 
 /* a * b for unsigned a and b, exact, as fx_imul64_soft. */
 static inline uint64_t fx_umul64_soft(uint32_t a, uint32_t b)
 {
     uint32_t ah = a >> 16, al = a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
-    uint64_t mid = (uint64_t)(ah * bl) + (al * bh);
-    return ((uint64_t)(ah * bh) << 32) + (mid << 16) + al * bl;
+    uint32_t m1 = ah * bl, m2 = al * bh;
+    uint64_t p = fx_pair64(ah * bh, al * bl);
+    p += fx_pair64(m1 >> 16, m1 << 16);
+    return p + fx_pair64(m2 >> 16, m2 << 16);
 }
 
 /* The same, out of line (fx_math.c). A file whose functions recurse (the
@@ -197,10 +217,25 @@ static inline fx_t fx_from_q32(int64_t q)
     return r == FX_MAX ? r : r + (fx_t)(((uint32_t)q >> 15) & 1);
 }
 
-/* Number of leading zero bits of x (0..31); exact. x must not be 0. */
+/* fx_clz32's and fx_ctz32's tables on ARMv6-M (fx_math.c). */
+extern const uint8_t fx_clz_table[32], fx_ctz_table[32];
+
+/* Number of leading zero bits of x (0..31); exact. x must not be 0. On
+ * ARMv6-M (FX_SOFT_MUL64), which has no CLZ, __builtin_clz is a library
+ * call of 19 instructions: there x with every bit below its top one set,
+ * 2^(32 - clz) - 1, times a de Bruijn constant puts a distinct 5-bit
+ * index in the top bits (#17). */
 static inline int fx_clz32(uint32_t x)
 {
 #if defined(__GNUC__)
+    if (FX_SOFT_MUL64) {
+        x |= x >> 1;
+        x |= x >> 2;
+        x |= x >> 4;
+        x |= x >> 8;
+        x |= x >> 16;
+        return fx_clz_table[(x * 0x07C4ACDDu) >> 27];
+    }
     return __builtin_clz(x); /* one instruction where the core has CLZ */
 #else
     int n = 0;
@@ -212,10 +247,15 @@ static inline int fx_clz32(uint32_t x)
 #endif
 }
 
-/* Number of trailing zero bits of x (0..31); exact. x must not be 0. */
+/* Number of trailing zero bits of x (0..31); exact. x must not be 0. On
+ * ARMv6-M (FX_SOFT_MUL64), which has no CLZ or RBIT, __builtin_ctz is a
+ * library call of 18 instructions: there the lowest set bit times a de
+ * Bruijn constant puts a distinct 5-bit index in the top bits (#17). */
 static inline int fx_ctz32(uint32_t x)
 {
 #if defined(__GNUC__)
+    if (FX_SOFT_MUL64)
+        return fx_ctz_table[((x & (0u - x)) * 0x077CB531u) >> 27];
     return __builtin_ctz(x);
 #else
     return 31 - fx_clz32(x & (0u - x));
@@ -314,7 +354,7 @@ static inline int64_t fx_floor_div(int64_t n, fx_t d, uint32_t rcp,
         *rem = (fx_t)r;
         return q;
     }
-    int32_t q = (int32_t)((n * (int64_t)rcp) >> 32);
+    int32_t q = (int32_t)(fx_iumul64((int32_t)n, rcp) >> 32);
     uint32_t r = (uint32_t)n - (uint32_t)q * (uint32_t)d;
     if (r >= (uint32_t)d) {
         if (n >= 0) {

@@ -46,6 +46,19 @@ void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s);
 void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
                          const rt_scene *s, fx_vec3 centre, fx_t radius);
 
+/* floor(d s / 2^32) for 0 <= d <= 2^17, 0 <= s < 2^31 and d s <= 2^35:
+ * a cell index. On the M0, from s's 16-bit halves and d's: floor(d s /
+ * 2^16) = d sh + dh sl + floor(dl sl / 2^16), below 2^19, each product
+ * below 2^32 (#17: no 64-bit library multiply). */
+static inline uint32_t rt_dir_index(fx_t d, fx_t s)
+{
+    if (!FX_SOFT_MUL64)
+        return (uint32_t)(((int64_t)d * s) >> 32);
+    uint32_t ud = (uint32_t)d, sl = (uint32_t)s & 0xFFFFu;
+    uint32_t t = (ud >> 16) * sl + (((ud & 0xFFFFu) * sl) >> 16);
+    return (ud * ((uint32_t)s >> 16) + t) >> 16;
+}
+
 /* The bit set of objects a ray with unit direction u from g's ball may
  * hit, or NULL when it can hit none. */
 static inline const uint32_t *rt_dir_cell(const rt_dir_grid *g, fx_t ux,
@@ -53,9 +66,11 @@ static inline const uint32_t *rt_dir_cell(const rt_dir_grid *g, fx_t ux,
 {
     if (ux < g->x0 || ux > g->x1 || uz < g->z0 || uz > g->z1)
         return g->outside;
-    /* (u - x0) * sx is below 2^18 * 2^28: the cell is the high word. */
-    uint32_t ix = (uint32_t)(((int64_t)(ux - g->x0) * g->sx) >> 32);
-    uint32_t iz = (uint32_t)(((int64_t)(uz - g->z0) * g->sz) >> 32);
+    /* u - x0 is at most x1 - x0 <= 2^17 and sx = RT_DIR_GRID 2^32 / (x1
+     * - x0): the cell is the high word of the product, at most
+     * RT_DIR_GRID. */
+    uint32_t ix = rt_dir_index(ux - g->x0, g->sx);
+    uint32_t iz = rt_dir_index(uz - g->z0, g->sz);
     if (ix >= RT_DIR_GRID)
         ix = RT_DIR_GRID - 1;
     if (iz >= RT_DIR_GRID)
