@@ -115,6 +115,23 @@ static inline int32_t unit_corr(int32_t t, int32_t e)
     return (int32_t)((fx_imul64(t, e) + ((int64_t)1 << 31)) >> 32);
 }
 
+/* 1 if the ray surely passes the sphere (c, r) by: the y component of
+ * oc x d (oc = c - o, components below 2^30 as for dot_small) beyond
+ * (r + 4) 2^FX_UBITS. |oc x d| is |d| (within 2^-28 of 1) times the
+ * centre's distance from the ray's line, so that distance is then over
+ * r + 1 ulps, and bsphere's own tests (h within an ulp of it) miss too:
+ * the same answers, without the closest approach, for 56 % of the
+ * seed's tests. One component only: the other two reject little more
+ * than the h box does, and cost every test that passes. */
+static inline int miss_side(int32_t ox, int32_t oz, const rt_ray *ray,
+                            fx_t r)
+{
+    const int64_t lim = (int64_t)(r + 4) << FX_UBITS; /* r < 2^29 */
+    /* |c + lim| < 2^62: c < -lim || c > lim as one compare. */
+    return (uint64_t)(fx_imul64(oz, ray->d.x) - fx_imul64(ox, ray->d.z) +
+                      lim) > 2 * (uint64_t)lim;
+}
+
 /* Closest approach of the ray to the bounding sphere (c, r). Returns 0 when
  * the ray misses it or meets it only outside (tmin, tmax); else *tca
  * (Q16.16, may exceed the fx_t range), *disc = r^2 - |h|^2 (Q32.32, the
@@ -135,6 +152,8 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         /* The common case, in 32-bit operands (smull/smlal on a Cortex-M3):
          * the same values as the general path below. */
         int32_t ox = c.x - ray->o.x, oy = c.y - ray->o.y, oz = c.z - ray->o.z;
+        if (miss_side(ox, oz, ray, r))
+            return 0;
         int64_t q = dot_small(ox, ray->d.x, oy, ray->d.y, oz, ray->d.z);
         /* |t| <= |oc| < sqrt(3) 2^30, so t fits; t +- r may not. */
         int32_t t32 = (int32_t)((q + UHALF) >> FX_UBITS);
