@@ -115,8 +115,9 @@ static inline int32_t unit_corr(int32_t t, int32_t e)
     return (int32_t)((fx_imul64(t, e) + ((int64_t)1 << 31)) >> 32);
 }
 
-/* 1 if the ray surely passes the sphere (c, r) by: the y component of
- * oc x d (oc = c - o, components below 2^30 as for dot_small) beyond
+/* 1 if the ray surely passes the sphere (c, r) by, for a small sphere
+ * and ray (r < 2^29): the y component of oc x d (oc = c - o,
+ * components below 2^30 as for dot_small) beyond
  * (r + 4) 2^FX_UBITS. |oc x d| is |d| (within 2^-28 of 1) times the
  * centre's distance from the ray's line, so that distance is then over
  * r + 1 ulps, and bsphere's own tests (h within an ulp of it) miss too:
@@ -126,10 +127,29 @@ static inline int32_t unit_corr(int32_t t, int32_t e)
 static inline int miss_side(int32_t ox, int32_t oz, const rt_ray *ray,
                             fx_t r)
 {
-    const int64_t lim = (int64_t)(r + 4) << FX_UBITS; /* r < 2^29 */
-    /* |c + lim| < 2^62: c < -lim || c > lim as one compare. */
-    return (uint64_t)(fx_imul64(oz, ray->d.x) - fx_imul64(ox, ray->d.z) +
-                      lim) > 2 * (uint64_t)lim;
+    /* c = oz d.x - ox d.z (|c| < 2^61) is beyond +-(r + 4) 2^FX_UBITS
+     * when c 2^-32 is beyond +-k, k 2^32 >= (r + 5) 2^30: a 32-bit
+     * compare (the ulps this gives away do not matter). */
+    const int32_t k = (int32_t)((uint32_t)r >> 2) + 2; /* r < 2^29 */
+    int32_t ch;
+    if (FX_SOFT_MUL64) {
+        /* From 16-bit halves (x = h 2^16 + l): c 2^-32 is within 2 of
+         * this, as the low products and the middle ones' dropped bits
+         * are each below one unit. (|h| < 2^14, l < 2^16: each middle
+         * sum below 2^31.) */
+        const int32_t zh = oz >> 16, xh = ox >> 16;
+        const int32_t zl = (int32_t)((uint32_t)oz & 0xFFFFu);
+        const int32_t xl = (int32_t)((uint32_t)ox & 0xFFFFu);
+        const int32_t ah = ray->d.x >> 16, bh = ray->d.z >> 16;
+        const int32_t al = (int32_t)((uint32_t)ray->d.x & 0xFFFFu);
+        const int32_t bl = (int32_t)((uint32_t)ray->d.z & 0xFFFFu);
+        ch = zh * ah - xh * bh + ((zh * al + zl * ah) >> 16) -
+             ((xh * bl + xl * bh) >> 16);
+        return ch >= k + 2 || ch <= -k - 2;
+    }
+    ch = (int32_t)((fx_imul64(oz, ray->d.x) + fx_imul64(ox, -ray->d.z)) >>
+                   32);
+    return (uint32_t)ch + (uint32_t)k > 2 * (uint32_t)k - 1u;
 }
 
 /* Closest approach of the ray to the bounding sphere (c, r). Returns 0 when
@@ -152,8 +172,6 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         /* The common case, in 32-bit operands (smull/smlal on a Cortex-M3):
          * the same values as the general path below. */
         int32_t ox = c.x - ray->o.x, oy = c.y - ray->o.y, oz = c.z - ray->o.z;
-        if (miss_side(ox, oz, ray, r))
-            return 0;
         int64_t q = dot_small(ox, ray->d.x, oy, ray->d.y, oz, ray->d.z);
         /* |t| <= |oc| < sqrt(3) 2^30, so t fits; t +- r may not. */
         int32_t t32 = (int32_t)((q + UHALF) >> FX_UBITS);
@@ -536,8 +554,9 @@ RT_NOINLINE static int hit_mesh(const rt_object *o, const rt_ray *r,
     return rt_mesh_hit(o, r, tmin, tmax, t, part);
 }
 
-int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
-                 fx_t *t, uint16_t *part)
+RT_NOINLINE static int intersect(const rt_object *o, const rt_ray *r,
+                                 fx_t tmin, fx_t tmax, fx_t *t,
+                                 uint16_t *part)
 {
     /* A kind this build removed never hits (rendering refuses scenes
      * with one): its case falls out of the switch. */
@@ -574,4 +593,17 @@ int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
         break;
     }
     return 0;
+}
+
+/* Every shape but the quad is first tested against its bounding sphere
+ * (bc, br; for a mesh when both are small), so a ray miss_side finds
+ * passing it by misses: rejected here, before the frame the shapes'
+ * tests need (a sibling call otherwise). */
+int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
+                 fx_t *t, uint16_t *part)
+{
+    if (o->kind != RT_QUAD && o->small && r->small &&
+        miss_side(o->bc.x - r->o.x, o->bc.z - r->o.z, r, o->br))
+        return 0;
+    return intersect(o, r, tmin, tmax, t, part);
 }
