@@ -115,40 +115,35 @@ static inline int32_t unit_corr(int32_t t, int32_t e)
     return (int32_t)((fx_imul64(t, e) + ((int64_t)1 << 31)) >> 32);
 }
 
-/* 1 if the ray surely passes the sphere (c, r) by, for a small sphere
- * and ray (r < 2^29): the y component of oc x d (oc = c - o,
- * components below 2^30 as for dot_small) beyond
- * (r + 4) 2^FX_UBITS. |oc x d| is |d| (within 2^-28 of 1) times the
- * centre's distance from the ray's line, so that distance is then over
- * r + 1 ulps, and bsphere's own tests (h within an ulp of it) miss too:
- * the same answers, without the closest approach, for 56 % of the
- * seed's tests. One component only: the other two reject little more
- * than the h box does, and cost every test that passes. */
-static inline int miss_side(int32_t ox, int32_t oz, const rt_ray *ray,
-                            fx_t r)
+/* 1 if c = a p - b q (a component of oc x d: oc = c - o for a small
+ * sphere (c, r) and ray, so |a|, |b| < 2^30, and unit components p and
+ * q) is beyond +-(r + 4) 2^FX_UBITS. |oc x d| is |d| (within 2^-28 of
+ * 1) times the centre's distance from the ray's line, so that distance
+ * is then over r + 1 ulps, and bsphere's own tests (h within an ulp of
+ * it) miss too: the same answers, without the closest approach. c is
+ * taken as c 2^-32 against +-k, k 2^32 >= (r + 5) 2^30 (r < 2^29): a
+ * 32-bit compare; the ulps this gives away do not matter. */
+static inline int miss_cross(int32_t a, int32_t p, int32_t b, int32_t q,
+                             fx_t r)
 {
-    /* c = oz d.x - ox d.z (|c| < 2^61) is beyond +-(r + 4) 2^FX_UBITS
-     * when c 2^-32 is beyond +-k, k 2^32 >= (r + 5) 2^30: a 32-bit
-     * compare (the ulps this gives away do not matter). */
-    const int32_t k = (int32_t)((uint32_t)r >> 2) + 2; /* r < 2^29 */
-    int32_t ch;
+    const int32_t k = (int32_t)((uint32_t)r >> 2) + 2;
     if (FX_SOFT_MUL64) {
         /* From 16-bit halves (x = h 2^16 + l): c 2^-32 is within 2 of
-         * this, as the low products and the middle ones' dropped bits
-         * are each below one unit. (|h| < 2^14, l < 2^16: each middle
+         * ch, as the low products and the middle ones' dropped bits
+         * are each below one unit. (|h| <= 2^14, l < 2^16: each middle
          * sum below 2^31.) */
-        const int32_t zh = oz >> 16, xh = ox >> 16;
-        const int32_t zl = (int32_t)((uint32_t)oz & 0xFFFFu);
-        const int32_t xl = (int32_t)((uint32_t)ox & 0xFFFFu);
-        const int32_t ah = ray->d.x >> 16, bh = ray->d.z >> 16;
-        const int32_t al = (int32_t)((uint32_t)ray->d.x & 0xFFFFu);
-        const int32_t bl = (int32_t)((uint32_t)ray->d.z & 0xFFFFu);
-        ch = zh * ah - xh * bh + ((zh * al + zl * ah) >> 16) -
-             ((xh * bl + xl * bh) >> 16);
+        const int32_t ah = a >> 16, bh = b >> 16, ph = p >> 16;
+        const int32_t qh = q >> 16;
+        const int32_t al = (int32_t)((uint32_t)a & 0xFFFFu);
+        const int32_t bl = (int32_t)((uint32_t)b & 0xFFFFu);
+        const int32_t pl = (int32_t)((uint32_t)p & 0xFFFFu);
+        const int32_t ql = (int32_t)((uint32_t)q & 0xFFFFu);
+        const int32_t ch = ah * ph - bh * qh + ((ah * pl + al * ph) >> 16) -
+                           ((bh * ql + bl * qh) >> 16);
         return ch >= k + 2 || ch <= -k - 2;
     }
-    ch = (int32_t)((fx_imul64(oz, ray->d.x) + fx_imul64(ox, -ray->d.z)) >>
-                   32);
+    const int32_t ch =
+        (int32_t)((fx_imul64(a, p) + fx_imul64(b, -q)) >> 32);
     return (uint32_t)ch + (uint32_t)k > 2 * (uint32_t)k - 1u;
 }
 
@@ -602,8 +597,15 @@ RT_NOINLINE static int intersect(const rt_object *o, const rt_ray *r,
 int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                  fx_t *t, uint16_t *part)
 {
-    if (o->kind != RT_QUAD && o->small && r->small &&
-        miss_side(o->bc.x - r->o.x, o->bc.z - r->o.z, r, o->br))
-        return 0;
+    if (o->kind != RT_QUAD && o->small && r->small) {
+        const int32_t ox = o->bc.x - r->o.x, oy = o->bc.y - r->o.y;
+        const int32_t oz = o->bc.z - r->o.z;
+        /* The y and x components of oc x d: of the seed's tests, the
+         * first rejects 58 %, all three 78 %; the z one costs more than
+         * it saves. */
+        if (miss_cross(oz, r->d.x, ox, r->d.z, o->br) ||
+            miss_cross(oy, r->d.z, oz, r->d.y, o->br))
+            return 0;
+    }
     return intersect(o, r, tmin, tmax, t, part);
 }
