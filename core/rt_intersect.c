@@ -115,38 +115,6 @@ static inline int32_t unit_corr(int32_t t, int32_t e)
     return (int32_t)((fx_imul64(t, e) + ((int64_t)1 << 31)) >> 32);
 }
 
-/* 1 if c = a p - b q (a component of oc x d: oc = c - o for a small
- * sphere (c, r) and ray, so |a|, |b| < 2^30, and unit components p and
- * q) is beyond +-(r + 4) 2^FX_UBITS. |oc x d| is |d| (within 2^-28 of
- * 1) times the centre's distance from the ray's line, so that distance
- * is then over r + 1 ulps, and bsphere's own tests (h within an ulp of
- * it) miss too: the same answers, without the closest approach. c is
- * taken as c 2^-32 against +-k, k 2^32 >= (r + 5) 2^30 (r < 2^29): a
- * 32-bit compare; the ulps this gives away do not matter. */
-static inline int miss_cross(int32_t a, int32_t p, int32_t b, int32_t q,
-                             fx_t r)
-{
-    const int32_t k = (int32_t)((uint32_t)r >> 2) + 2;
-    if (FX_SOFT_MUL64) {
-        /* From 16-bit halves (x = h 2^16 + l): c 2^-32 is within 2 of
-         * ch, as the low products and the middle ones' dropped bits
-         * are each below one unit. (|h| <= 2^14, l < 2^16: each middle
-         * sum below 2^31.) */
-        const int32_t ah = a >> 16, bh = b >> 16, ph = p >> 16;
-        const int32_t qh = q >> 16;
-        const int32_t al = (int32_t)((uint32_t)a & 0xFFFFu);
-        const int32_t bl = (int32_t)((uint32_t)b & 0xFFFFu);
-        const int32_t pl = (int32_t)((uint32_t)p & 0xFFFFu);
-        const int32_t ql = (int32_t)((uint32_t)q & 0xFFFFu);
-        const int32_t ch = ah * ph - bh * qh + ((ah * pl + al * ph) >> 16) -
-                           ((bh * ql + bl * qh) >> 16);
-        return ch >= k + 2 || ch <= -k - 2;
-    }
-    const int32_t ch =
-        (int32_t)((fx_imul64(a, p) + fx_imul64(b, -q)) >> 32);
-    return (uint32_t)ch + (uint32_t)k > 2 * (uint32_t)k - 1u;
-}
-
 /* Closest approach of the ray to the bounding sphere (c, r). Returns 0 when
  * the ray misses it or meets it only outside (tmin, tmax); else *tca
  * (Q16.16, may exceed the fx_t range), *disc = r^2 - |h|^2 (Q32.32, the
@@ -549,9 +517,8 @@ RT_NOINLINE static int hit_mesh(const rt_object *o, const rt_ray *r,
     return rt_mesh_hit(o, r, tmin, tmax, t, part);
 }
 
-RT_NOINLINE static int intersect(const rt_object *o, const rt_ray *r,
-                                 fx_t tmin, fx_t tmax, fx_t *t,
-                                 uint16_t *part)
+int rt_intersect_near(const rt_object *o, const rt_ray *r, fx_t tmin,
+                      fx_t tmax, fx_t *t, uint16_t *part)
 {
     /* A kind this build removed never hits (rendering refuses scenes
      * with one): its case falls out of the switch. */
@@ -590,22 +557,10 @@ RT_NOINLINE static int intersect(const rt_object *o, const rt_ray *r,
     return 0;
 }
 
-/* Every shape but the quad is first tested against its bounding sphere
- * (bc, br; for a mesh when both are small), so a ray miss_side finds
- * passing it by misses: rejected here, before the frame the shapes'
- * tests need (a sibling call otherwise). */
 int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                  fx_t *t, uint16_t *part)
 {
-    if (o->kind != RT_QUAD && o->small && r->small) {
-        const int32_t ox = o->bc.x - r->o.x, oy = o->bc.y - r->o.y;
-        const int32_t oz = o->bc.z - r->o.z;
-        /* The y and x components of oc x d: of the seed's tests, the
-         * first rejects 58 %, all three 78 %; the z one costs more than
-         * it saves. */
-        if (miss_cross(oz, r->d.x, ox, r->d.z, o->br) ||
-            miss_cross(oy, r->d.z, oz, r->d.y, o->br))
-            return 0;
-    }
-    return intersect(o, r, tmin, tmax, t, part);
+    if (rt_passes_by(o, r))
+        return 0;
+    return rt_intersect_near(o, r, tmin, tmax, t, part);
 }

@@ -21,7 +21,10 @@ static inline void rt_try_nearest(rt_work *wk, const rt_object *objs,
     fx_t ti;
     uint16_t pi;
     RT_COUNT(wk, tests);
-    if (rt_intersect(&objs[i], r, RT_EPS, *best, &ti, &pi)) {
+    /* The common miss inline (rt_passes_by), without the call: 5.9 of
+     * the seed's 8 tests a pixel are these rays', most passing by. */
+    if (!rt_passes_by(&objs[i], r) &&
+        rt_intersect_near(&objs[i], r, RT_EPS, *best, &ti, &pi)) {
         *best = ti;
         *obj = (uint16_t)i;
         *part = pi;
