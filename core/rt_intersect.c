@@ -517,8 +517,8 @@ RT_NOINLINE static int hit_mesh(const rt_object *o, const rt_ray *r,
     return rt_mesh_hit(o, r, tmin, tmax, t, part);
 }
 
-int rt_intersect_near(const rt_object *o, const rt_ray *r, fx_t tmin,
-                      fx_t tmax, fx_t *t, uint16_t *part)
+int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
+                 fx_t *t, uint16_t *part)
 {
     /* A kind this build removed never hits (rendering refuses scenes
      * with one): its case falls out of the switch. */
@@ -555,12 +555,4 @@ int rt_intersect_near(const rt_object *o, const rt_ray *r, fx_t tmin,
         break;
     }
     return 0;
-}
-
-int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
-                 fx_t *t, uint16_t *part)
-{
-    if (rt_passes_by(o, r))
-        return 0;
-    return rt_intersect_near(o, r, tmin, tmax, t, part);
 }

@@ -12,10 +12,6 @@
 int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                  fx_t *t, uint16_t *part);
 
-/* rt_intersect for a ray rt_passes_by has not rejected. */
-int rt_intersect_near(const rt_object *o, const rt_ray *r, fx_t tmin,
-                      fx_t tmax, fx_t *t, uint16_t *part);
-
 /* 1 if c = a p - b q (a component of oc x d: oc = c - o for a small
  * sphere (c, r) and ray, so |a|, |b| < 2^30, and unit components p and
  * q) is beyond +-(r + 4) 2^FX_UBITS. |oc x d| is |d| (within 2^-28 of
