@@ -13,15 +13,21 @@
 #include "rt_shape.h"
 #include "rt_trace.h"
 
-/* Tests object i for a nearer hit than *best. */
+/* Tests object i for a nearer hit than *best, of a ray leaving object
+ * from. The common miss inline (rt_passes_by), without the call: 5.9
+ * of the seed's 8 tests a pixel are these rays', most passing by. Not
+ * for from itself: a ray from its surface starts within its bounding
+ * sphere, so its line never passes it by. */
 static inline void rt_try_nearest(rt_work *wk, const rt_object *objs,
-                                  const rt_ray *r, unsigned i, fx_t *best,
+                                  const rt_ray *r, unsigned i,
+                                  unsigned from, fx_t *best,
                                   uint16_t *obj, uint16_t *part)
 {
     fx_t ti;
     uint16_t pi;
     RT_COUNT(wk, tests);
-    if (rt_intersect(&objs[i], r, RT_EPS, *best, &ti, &pi)) {
+    if ((i == from || !rt_passes_by(&objs[i], r)) &&
+        rt_intersect(&objs[i], r, RT_EPS, *best, &ti, &pi)) {
         *best = ti;
         *obj = (uint16_t)i;
         *part = pi;
@@ -42,20 +48,20 @@ static inline int rt_nearest(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
      * outside, so this ray runs inside `from`. */
     if (skip == RT_NO_OBJECT && from < s->n_objects &&
         rt_sealed_alone(&tr->sealed, from)) {
-        rt_try_nearest(wk, s->obj, r, from, &best, obj, part);
+        rt_try_nearest(wk, s->obj, r, from, from, &best, obj, part);
     } else if (rt_dir_from_object(&tr->grids, from, s->n_objects, r->d,
                                   &cand)) {
         for (unsigned w = 0; cand && w < tr->grids.words; w++) {
             for (uint32_t m = cand[w]; m; m &= m - 1) {
                 unsigned i = w * 32 + (unsigned)fx_ctz32(m);
                 if (i != skip)
-                    rt_try_nearest(wk, s->obj, r, i, &best, obj, part);
+                    rt_try_nearest(wk, s->obj, r, i, from, &best, obj, part);
             }
         }
     } else {
         for (unsigned i = 0; i < s->n_objects; i++)
             if (i != skip)
-                rt_try_nearest(wk, s->obj, r, i, &best, obj, part);
+                rt_try_nearest(wk, s->obj, r, i, from, &best, obj, part);
     }
     *t = best;
     return best != FX_MAX;
