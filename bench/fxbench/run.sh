@@ -31,7 +31,7 @@ for cpu in cortex-m3 cortex-m0; do
         "$CORE"/fx_math.c "$CORE"/fx_sqrt.c "$CORE"/fx_vec.c \
         "$CORE"/fx_dir.c "$CORE"/fx_rsqrt.c \
         "$CORE"/rt_intersect.c "$CORE"/rt_scene.c "$CORE"/rt_mesh.c \
-        "$CORE"/rt_mesh_check.c \
+        "$CORE"/rt_mesh_check.c "$CORE"/rt_normal.c "$CORE"/rt_mesh_normal.c \
         -lgcc -o "$elf"
     echo "== $cpu ($CORE)"
     # QEMU prints semihosting SYS_WRITE0 text on stderr.
