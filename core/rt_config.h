@@ -121,8 +121,9 @@
 #define RT_DIR_GRID 8
 #endif
 
-/* Most direction grids of one render: lights first, then the reflective
- * or transparent objects in scene order; the rest test every object. */
+/* Most direction grids of one render: lights first, then the eye's
+ * mirror images in unbumped mirror quads, then the reflective or
+ * transparent objects in scene order; the rest test every object. */
 #ifndef RT_DIR_MAX_GRIDS
 #define RT_DIR_MAX_GRIDS (RT_MAX_LIGHTS + 4)
 #endif

@@ -99,7 +99,8 @@ static fx_t cells_per_unit(fx_t lo, fx_t hi)
 }
 
 void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
-                         const rt_scene *s, fx_vec3 lp, fx_t radius)
+                         const rt_scene *s, fx_vec3 lp, fx_t radius,
+                         int every_way)
 {
     const unsigned n = s->n_objects;
     uint32_t *out = g->out;
@@ -124,11 +125,11 @@ void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
                  ((far + radius + off_max) >> 12) + FX_ONE / 256;
     fx_t slack = sl > FAR_LIMIT ? FAR_LIMIT : (fx_t)sl;
 
-    /* The range: the narrow cones' boxes, or every box if none is. Only
-     * for a light: rays leaving an object's ball go every way, and there
-     * the wide cones outside the range would be tested for all of them. */
+    /* The range: the narrow cones' boxes, or every box if none is. Not
+     * for rays leaving an object's ball: they go every way, and there the
+     * wide cones outside the range would be tested for all of them. */
     fx_t x0 = FX_ONE, x1 = -FX_ONE, z0 = FX_ONE, z1 = -FX_ONE;
-    for (int pass = radius > 0; pass < 2 && x0 > x1; pass++)
+    for (int pass = every_way != 0; pass < 2 && x0 > x1; pass++)
         for (unsigned i = 0; i < n; i++) {
             cone_box b;
             cone_of(&b, &s->obj[i], lp, slack);
@@ -193,15 +194,62 @@ void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
 
 /* Takes the next grid from the pool, or returns RT_DIR_NONE. */
 static uint8_t add_grid(rt_dir_grids *gs, unsigned *used, unsigned *next,
-                        const rt_scene *s, fx_vec3 centre, fx_t radius)
+                        const rt_scene *s, fx_vec3 centre, fx_t radius,
+                        int every_way)
 {
     const unsigned size = 2u * N * N * gs->words;
     if (*used >= RT_DIR_MAX_GRIDS || *next + size > RT_DIR_POOL_WORDS)
         return RT_DIR_NONE;
     rt_dir_grid_prepare(&gs->grid[*used], gs->pool + *next, gs->words, s,
-                        centre, radius);
+                        centre, radius, every_way);
     *next += size;
     return (uint8_t)(*used)++;
+}
+
+/* The eye e mirrored in quad o's plane (through o->a, unit normal o->n)
+ * into *m, with in *radius how far a reflected camera ray's line may pass
+ * from it; 0 when that is out of range (no grid).
+ *
+ * A camera ray from e hits the quad at p; its mirror direction r, traced
+ * back from p by |p - e|, ends at e's image in the plane through p
+ * parallel to o->n: *m, if p lies on that plane. So the reflected ray
+ * starts, seen from *m, within the sum of: twice p's distance from the
+ * plane of a and o->n (p is on the quad's own plane, whose normal o->n
+ * is within a few 2^-FX_UBITS: at most (lu + lv) 2^-(FX_UBITS - 2)),
+ * p's own rounding, and that of *m (each a few ulps). The radius takes
+ * 2^-10 of |e - a| + lu + lv and 1/64 unit, far above both at any
+ * FX_UBITS >= 16; rt_dir_grid_prepare adds the origin offset and the
+ * rounding of r over the scene's extent. */
+static int mirror_eye(const rt_object *o, fx_vec3 e, fx_vec3 *m,
+                      fx_t *radius)
+{
+    const int64_t v[3] = { (int64_t)e.x - o->a.x, (int64_t)e.y - o->a.y,
+                           (int64_t)e.z - o->a.z };
+    const int32_t n[3] = { o->n.x, o->n.y, o->n.z };
+    int64_t dot = 0, size = (int64_t)o->lu + o->lv;
+    for (unsigned k = 0; k < 3; k++) {
+        if (v[k] <= -FAR_LIMIT || v[k] >= FAR_LIMIT)
+            return 0;
+        dot += v[k] * n[k]; /* below 3 2^29 2^30 */
+        size += v[k] < 0 ? -v[k] : v[k];
+    }
+    /* (e - a).n, Q16.16 */
+    const int64_t h = (dot + ((int64_t)1 << (FX_UBITS - 1))) >> FX_UBITS;
+    int64_t mk[3];
+    for (unsigned k = 0; k < 3; k++) {
+        /* 2 h n_k: |h| < 2^31, |n_k| <= 2^FX_UBITS */
+        const int64_t shift = (2 * h * n[k] + ((int64_t)1 << (FX_UBITS - 1)))
+                              >> FX_UBITS;
+        mk[k] = (int64_t)(k == 0 ? e.x : k == 1 ? e.y : e.z) - shift;
+        if (mk[k] <= -FAR_LIMIT || mk[k] >= FAR_LIMIT)
+            return 0;
+    }
+    *m = fx_v3((fx_t)mk[0], (fx_t)mk[1], (fx_t)mk[2]);
+    const int64_t r = (size >> 10) + FX_ONE / 64;
+    if (r >= FAR_LIMIT)
+        return 0;
+    *radius = (fx_t)r;
+    return 1;
 }
 
 void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s)
@@ -211,19 +259,32 @@ void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s)
     for (unsigned i = 0; i < RT_MAX_LIGHTS; i++)
         gs->light[i] = RT_DIR_NONE;
     for (unsigned i = 0; i < RT_MAX_OBJECTS; i++)
-        gs->from[i] = RT_DIR_NONE;
+        gs->from[i] = gs->mirror[i] = RT_DIR_NONE;
+    gs->eye = s->cam.eye;
     if (gs->words == 0)
         return;
     /* Shadow rays are the most numerous: lights first. */
     for (unsigned i = 0; RT_HAS_SHADOWS && s->shadows && i < s->n_lights &&
                          i < RT_MAX_LIGHTS;
          i++)
-        gs->light[i] = add_grid(gs, &used, &next, s, s->light[i].pos, 0);
+        gs->light[i] =
+            add_grid(gs, &used, &next, s, s->light[i].pos, 0, 0);
+    /* Then camera rays' reflections in unbumped mirror quads (a floor):
+     * as many as the camera rays that hit them. */
+    for (unsigned i = 0; RT_HAS_REFLECTION && i < s->n_objects; i++) {
+        const rt_object *o = &s->obj[i];
+        const rt_material *m = &s->mat[o->material];
+        fx_vec3 c;
+        fx_t radius;
+        if (o->kind == RT_QUAD && m->reflect > 0 && m->bump == 0 &&
+            mirror_eye(o, s->cam.eye, &c, &radius))
+            gs->mirror[i] = add_grid(gs, &used, &next, s, c, radius, 0);
+    }
     for (unsigned i = 0; RT_HAS_SECONDARY && i < s->n_objects; i++) {
         const rt_object *o = &s->obj[i];
         const rt_material *m = &s->mat[o->material];
         if (m->reflect > 0 || m->transparency > 0)
-            gs->from[i] = add_grid(gs, &used, &next, s, o->bc, o->br);
+            gs->from[i] = add_grid(gs, &used, &next, s, o->bc, o->br, 1);
     }
 }
 

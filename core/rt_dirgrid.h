@@ -32,19 +32,26 @@ typedef struct {
     unsigned words;                 /* 32-bit words of one bit set */
     uint8_t light[RT_MAX_LIGHTS];   /* shadow rays to light i: grid */
     uint8_t from[RT_MAX_OBJECTS];   /* rays leaving object i: grid */
+    uint8_t mirror[RT_MAX_OBJECTS]; /* eye rays mirrored off plane i */
+    fx_vec3 eye;                    /* the eye those grids are for */
     rt_dir_grid grid[RT_DIR_MAX_GRIDS];
     uint32_t pool[RT_DIR_POOL_WORDS];
 } rt_dir_grids;
 
-/* Builds grids for every light, then for every object whose material
- * reflects or refracts, while RT_DIR_MAX_GRIDS and the pool last; the rest
- * get RT_DIR_NONE. */
+/* Builds grids for every light, then for the mirror images of the eye in
+ * reflecting planes (rt_dir_mirror_of), then for every object whose
+ * material reflects or refracts, while RT_DIR_MAX_GRIDS and the pool
+ * last; the rest get RT_DIR_NONE. */
 void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s);
 
 /* Fills g (its bit sets at cell, 2 RT_DIR_GRID^2 * words words) with the
- * objects of s a ray from within radius of centre can hit. */
+ * objects of s a ray from within radius of centre can hit. every_way: the
+ * rays leave the ball in every direction (from an object's surface), so
+ * the grid spans every direction; else (from a light or a point) only
+ * those of the objects that subtend a small angle. */
 void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
-                         const rt_scene *s, fx_vec3 centre, fx_t radius);
+                         const rt_scene *s, fx_vec3 centre, fx_t radius,
+                         int every_way);
 
 /* floor(d s / 2^32) for 0 <= d <= 2^17, 0 <= s < 2^31 and d s <= 2^35:
  * a cell index. On the M0, from s's 16-bit halves and d's: floor(d s /
@@ -79,19 +86,36 @@ static inline const uint32_t *rt_dir_cell(const rt_dir_grid *g, fx_t ux,
     return g->cell + c * words;
 }
 
-/* Rays leaving object i (i < n_objects) in direction d: 1 with *cand set
- * to what they may hit (rt_dir_cell) if i has a grid, else 0. */
-static inline int rt_dir_from_object(const rt_dir_grids *gs, unsigned i,
-                                     unsigned n_objects, fx_dir3 d,
-                                     const uint32_t **cand)
+/* The grid of rays leaving object i, or RT_DIR_NONE (also for i >=
+ * n_objects: no known origin). */
+static inline unsigned rt_dir_from_object(const rt_dir_grids *gs,
+                                          unsigned i, unsigned n_objects)
 {
-    if (i >= n_objects || gs->from[i] == RT_DIR_NONE)
-        return 0;
+    return i < n_objects ? gs->from[i] : RT_DIR_NONE;
+}
+
+/* The grid of the reflections off object i, a plane, of rays from o, if
+ * o is the eye; else RT_DIR_NONE. Such a ray runs on the line from the eye's mirror image in
+ * the plane through its hit: seen from that image it is a ray from a
+ * point, culled as tightly as a shadow ray. A floor's own grid, centred
+ * on a ball that holds the whole scene, culls nothing. */
+static inline unsigned rt_dir_mirror_of(const rt_dir_grids *gs, unsigned i,
+                                        fx_vec3 o)
+{
+    if (o.x != gs->eye.x || o.y != gs->eye.y || o.z != gs->eye.z)
+        return RT_DIR_NONE; /* the reflected ray's parent is no eye ray */
+    return gs->mirror[i];
+}
+
+/* What a ray in direction d may hit, by grid g (not RT_DIR_NONE): a bit
+ * set (rt_dir_cell), or NULL for nothing. */
+static inline const uint32_t *rt_dir_candidates(const rt_dir_grids *gs,
+                                                unsigned g, fx_dir3 d)
+{
     /* The grids are laid out in Q16.16: d rounded to it (within half an
      * ulp of the truth, inside the grids' margins). */
-    *cand = rt_dir_cell(&gs->grid[gs->from[i]], fx_u_to_fx(d.x),
-                        fx_u_to_fx(d.y), fx_u_to_fx(d.z), gs->words);
-    return 1;
+    return rt_dir_cell(&gs->grid[g], fx_u_to_fx(d.x), fx_u_to_fx(d.y),
+                       fx_u_to_fx(d.z), gs->words);
 }
 
 /* Shadow rays towards light li along unit direction ld: 1 with *cand set
@@ -119,12 +143,25 @@ static inline void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s)
     gs->words = 0;
 }
 
-static inline int rt_dir_from_object(const rt_dir_grids *gs, unsigned i,
-                                     unsigned n_objects, fx_dir3 d,
-                                     const uint32_t **cand)
+static inline unsigned rt_dir_from_object(const rt_dir_grids *gs,
+                                          unsigned i, unsigned n_objects)
 {
-    (void)gs, (void)i, (void)n_objects, (void)d, (void)cand;
-    return 0;
+    (void)gs, (void)i, (void)n_objects;
+    return RT_DIR_NONE;
+}
+
+static inline unsigned rt_dir_mirror_of(const rt_dir_grids *gs, unsigned i,
+                                        fx_vec3 o)
+{
+    (void)gs, (void)i, (void)o;
+    return RT_DIR_NONE;
+}
+
+static inline const uint32_t *rt_dir_candidates(const rt_dir_grids *gs,
+                                                unsigned g, fx_dir3 d)
+{
+    (void)gs, (void)g, (void)d;
+    return 0; /* never asked: there is no grid */
 }
 
 static inline int rt_dir_to_light(const rt_dir_grids *gs, unsigned li,

@@ -35,22 +35,22 @@ static inline void rt_try_nearest(rt_work *wk, const rt_object *objs,
 }
 
 /* Nearest hit among all objects but `skip`, of a ray leaving object
- * `from` (RT_NO_OBJECT: unknown). Returns 1 and sets *t, *obj and *part
- * on a hit. */
+ * `from` (RT_NO_OBJECT: unknown), among the candidates of direction grid
+ * `grid` (RT_DIR_NONE: every object). Returns 1 and sets *t, *obj and
+ * *part on a hit. */
 static inline int rt_nearest(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
-                             unsigned skip, unsigned from, fx_t *t,
-                             uint16_t *obj, uint16_t *part)
+                             unsigned skip, unsigned from, unsigned grid,
+                             fx_t *t, uint16_t *obj, uint16_t *part)
 {
     const rt_scene *s = tr->scene;
-    const uint32_t *cand;
     fx_t best = FX_MAX;
     /* A closed convex object skips itself exactly for rays leaving its
      * outside, so this ray runs inside `from`. */
     if (skip == RT_NO_OBJECT && from < s->n_objects &&
         rt_sealed_alone(&tr->sealed, from)) {
         rt_try_nearest(wk, s->obj, r, from, from, &best, obj, part);
-    } else if (rt_dir_from_object(&tr->grids, from, s->n_objects, r->d,
-                                  &cand)) {
+    } else if (grid != RT_DIR_NONE) {
+        const uint32_t *cand = rt_dir_candidates(&tr->grids, grid, r->d);
         for (unsigned w = 0; cand && w < tr->grids.words; w++) {
             for (uint32_t m = cand[w]; m; m &= m - 1) {
                 unsigned i = w * 32 + (unsigned)fx_ctz32(m);

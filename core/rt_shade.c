@@ -21,7 +21,7 @@
 
 RT_NOINLINE static rt_rgb trace(const rt_tracer *tr, rt_work *wk,
                                 const rt_ray *r, unsigned depth, fx_t w,
-                                unsigned skip, unsigned from);
+                                unsigned skip, unsigned from, unsigned grid);
 
 /* d.n exact (fx_d3_dot_raw), given dnn, the same value formed once by
  * shade(). Where a product is a call (FX_SOFT_MUL64, the M0) reusing dnn
@@ -157,10 +157,16 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
         fx_t wr = rt_child_weight(w, kr);
         if (kr > 0 && rt_worth_tracing(tr, wk, wr, depth + 1)) {
             rt_ray rr;
+            /* A camera ray's reflection in a plane: the grid from the
+             * eye's mirror image (rt_dirgrid.h), else the object's. */
+            unsigned g = rt_dir_mirror_of(&tr->grids, oi, r->o);
+            if (g == RT_DIR_NONE)
+                g = rt_dir_from_object(&tr->grids, oi, s->n_objects);
             rt_ray_set(&rr, p_out,
                        rt_reflect_dir_dn(r->d, n, d_dot_n(r->d, n, dnn)));
             RT_COUNT(wk, reflection);
-            rt_rgb_madd(&c, trace(tr, wk, &rr, depth + 1, wr, skip_out, oi),
+            rt_rgb_madd(&c,
+                        trace(tr, wk, &rr, depth + 1, wr, skip_out, oi, g),
                         kr);
         }
     }
@@ -176,7 +182,9 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
                            rt_reflect_dir_dn(r->d, n, d_dot_n(r->d, n, dnn)));
                 RT_COUNT(wk, reflection);
                 rt_rgb_madd(&c,
-                            trace(tr, wk, &tr2, depth + 1, wt, skip_out, oi),
+                            trace(tr, wk, &tr2, depth + 1, wt, skip_out, oi,
+                                  rt_dir_from_object(&tr->grids, oi,
+                                                     s->n_objects)),
                             kt);
             } else {
                 unsigned skip_in =
@@ -186,7 +194,9 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
                 rt_ray_set(&tr2, rt_v3_madd_pow2(p, ng, off, 1), td);
                 RT_COUNT(wk, refraction);
                 rt_rgb_madd(&c,
-                            trace(tr, wk, &tr2, depth + 1, wt, skip_in, oi),
+                            trace(tr, wk, &tr2, depth + 1, wt, skip_in, oi,
+                                  rt_dir_from_object(&tr->grids, oi,
+                                                     s->n_objects)),
                             kt);
             }
         }
@@ -198,12 +208,12 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
  * level's frame larger (and the seed 0.7 % dearer on the Cortex-M3). */
 RT_NOINLINE static rt_rgb trace(const rt_tracer *tr, rt_work *wk,
                                 const rt_ray *r, unsigned depth, fx_t w,
-                                unsigned skip, unsigned from)
+                                unsigned skip, unsigned from, unsigned grid)
 {
     fx_t t;
     uint16_t oi = 0;
     uint16_t part = 0;
-    if (!rt_nearest(tr, wk, r, skip, from, &t, &oi, &part))
+    if (!rt_nearest(tr, wk, r, skip, from, grid, &t, &oi, &part))
         return tr->scene->background;
     if (wk->sign) /* a draft render tells its pixels apart by their hits */
         rt_draft_sign_hit(wk, tr->scene, oi, r, t, w);
@@ -213,7 +223,8 @@ RT_NOINLINE static rt_rgb trace(const rt_tracer *tr, rt_work *wk,
 rt_rgb rt_trace(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
                 unsigned depth, fx_t w, unsigned skip, unsigned from)
 {
-    return trace(tr, wk, r, depth, w, skip, from);
+    return trace(tr, wk, r, depth, w, skip, from,
+                 rt_dir_from_object(&tr->grids, from, tr->scene->n_objects));
 }
 
 rt_rgb rt_trace_camera(const rt_tracer *tr, rt_work *wk, const rt_ray *r,

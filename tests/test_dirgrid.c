@@ -4,12 +4,14 @@
  * a shadow ray or a ray leaving an object hits must be listed in the ray's
  * cell. Random lights and shapes from tiny to huge, and rays aimed to
  * graze each object's bounding sphere, where a too-narrow cone would show
- * first.
+ * first. Also the reflections of camera rays in a mirror quad, culled from
+ * the eye's mirror image.
  */
 #include <math.h>
 #include <string.h>
 
 #include "harness.h"
+#include "rt_bounce.h"
 #include "rt_shape.h"
 #include "rt_trace.h"
 
@@ -124,7 +126,7 @@ static void shadow_trial(double spread, long *hits, long *missing)
         ? fx_v3_add(near->bc, v3(uni(-2, 2), uni(-2, 2), uni(-2, 2)))
         : v3(uni(-spread, spread), uni(-spread, spread),
              uni(-spread, spread));
-    rt_dir_grid_prepare(&g, cell, 1, &s, lp, 0);
+    rt_dir_grid_prepare(&g, cell, 1, &s, lp, 0, 0);
     for (int k = 0; k < 400; k++) {
         const rt_object *b = &s.obj[th_rnd64(&rng) % s.n_objects];
         fx_vec3 q = graze_point(lp, b->bc, b->br);
@@ -153,7 +155,7 @@ static void leaving_trial(double spread, long *hits, long *missing)
     static uint32_t cell[2 * RT_DIR_GRID * RT_DIR_GRID];
     random_scene(&s, spread);
     const rt_object *from = &s.obj[th_rnd64(&rng) % s.n_objects];
-    rt_dir_grid_prepare(&g, cell, 1, &s, from->bc, from->br);
+    rt_dir_grid_prepare(&g, cell, 1, &s, from->bc, from->br, 1);
     for (int k = 0; k < 400; k++) {
         const rt_object *b = &s.obj[th_rnd64(&rng) % s.n_objects];
         fx_vec3 o = graze_point(from->bc, from->bc, from->br);
@@ -168,6 +170,99 @@ static void leaving_trial(double spread, long *hits, long *missing)
                   rt_dir_cell(&g, fx_u_to_fx(d.x), fx_u_to_fx(d.y),
                               fx_u_to_fx(d.z), 1),
                   hits, missing);
+    }
+}
+
+static double dot_d(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* A point of quad o (in Q16.16) on the line from m through q, or else a
+ * random point of the quad. */
+static fx_vec3 quad_point(const rt_object *o, fx_vec3 m, fx_vec3 q)
+{
+    const double s = 1.0 / 65536, us = 1.0 / FX_UONE;
+    const double n[3] = { o->n.x * us, o->n.y * us, o->n.z * us };
+    const double pu[3] = { o->pu.x * us, o->pu.y * us, o->pu.z * us };
+    const double pv[3] = { o->pv.x * us, o->pv.y * us, o->pv.z * us };
+    const double am[3] = { (o->a.x - (double)m.x) * s,
+                           (o->a.y - (double)m.y) * s,
+                           (o->a.z - (double)m.z) * s };
+    const double qm[3] = { (q.x - (double)m.x) * s, (q.y - (double)m.y) * s,
+                           (q.z - (double)m.z) * s };
+    const double den = dot_d(qm, n);
+    if (den != 0) {
+        const double f = dot_d(am, n) / den;
+        const double pa[3] = { f * qm[0] - am[0], f * qm[1] - am[1],
+                               f * qm[2] - am[2] };
+        const double u = dot_d(pa, pu), v = dot_d(pa, pv);
+        if (f > 0 && u >= 0 && u <= o->lu * s && v >= 0 && v <= o->lv * s)
+            return fx_v3_add(o->a, v3(pa[0], pa[1], pa[2]));
+    }
+    return fx_v3_add(o->a, fx_v3_add(fx_v3_scale(o->b, D2F(uni(0, 1))),
+                                     fx_v3_scale(o->c, D2F(uni(0, 1)))));
+}
+
+/* Camera rays from a random eye reflected in a mirror quad (object 0) as
+ * shade() reflects them, aimed so that the reflections graze the other
+ * objects' bounding spheres: each object they hit must be among the
+ * candidates of the mirror-image grid. */
+static void mirror_trial(double spread, long *hits, long *missing,
+                         long *grids)
+{
+    static rt_scene s;
+    static rt_dir_grids gs;
+    random_scene(&s, spread);
+    do
+        random_object(&s.obj[0], spread);
+    while (s.obj[0].kind != RT_QUAD);
+    s.n_materials = 1;
+    s.mat[0].reflect = FX_ONE / 2;
+    const rt_object *o = &s.obj[0];
+    s.cam.eye = th_rnd64(&rng) % 4 == 0
+        ? fx_v3_add(o->bc, v3(uni(-2, 2), uni(-2, 2), uni(-2, 2)))
+        : v3(uni(-spread, spread), uni(-spread, spread),
+             uni(-spread, spread));
+    rt_dir_grids_prepare(&gs, &s);
+    const unsigned g = rt_dir_mirror_of(&gs, 0, s.cam.eye);
+    if (g == RT_DIR_NONE)
+        return;
+    ++*grids;
+    /* The eye's image, as the test finds it (double). */
+    const double us = 1.0 / FX_UONE;
+    const double n[3] = { o->n.x * us, o->n.y * us, o->n.z * us };
+    const double ea[3] = { (s.cam.eye.x - (double)o->a.x) / 65536,
+                           (s.cam.eye.y - (double)o->a.y) / 65536,
+                           (s.cam.eye.z - (double)o->a.z) / 65536 };
+    const double h = 2 * dot_d(ea, n);
+    const fx_vec3 m = fx_v3_sub(s.cam.eye, v3(h * n[0], h * n[1], h * n[2]));
+    for (int k = 0; k < 600; k++) {
+        const rt_object *b = &s.obj[th_rnd64(&rng) % s.n_objects];
+        const fx_vec3 p0 = quad_point(o, m, graze_point(m, b->bc, b->br));
+        const fx_vec3 e = s.cam.eye;
+        if (p0.x == e.x && p0.y == e.y && p0.z == e.z)
+            continue;
+        rt_ray r = make_ray(e, fx_d3_normalize(fx_v3_sub(p0, e)));
+        fx_t t;
+        uint16_t part;
+        if (!rt_intersect(o, &r, RT_EPS, FX_MAX, &t, &part))
+            continue;
+        const fx_vec3 p = fx_v3_madd_d(r.o, r.d, t);
+        fx_dir3 ng = o->n;
+        if (fx_d3_dot_raw(r.d, ng) > 0)
+            ng = fx_d3_neg(ng);
+        const rt_ray rr = make_ray(rt_v3_madd_pow2(p, ng, rt_origin_log2(o), 0),
+                                   rt_reflect_dir(r.d, ng));
+        const uint32_t *cand = rt_dir_candidates(&gs, g, rr.d);
+        for (unsigned i = 1; i < s.n_objects; i++) {
+            if (!rt_intersect(&s.obj[i], &rr, RT_EPS, FX_MAX, &t, &part))
+                continue;
+            ++*hits;
+            if (!listed(cand, i) && ++*missing <= 5)
+                printf("object %u (kind %d) is hit but not listed\n", i,
+                       s.obj[i].kind);
+        }
     }
 }
 
@@ -188,5 +283,31 @@ int main(void)
     CHECK(hits > 100000);
     printf("object grids: %ld hits of leaving rays, %ld not listed\n", hits,
            missing);
+    long grids = 0;
+    hits = missing = 0;
+    for (int t = 0; t < 1500; t++)
+        mirror_trial(t % 10 == 0 ? 4000.0 : 40.0, &hits, &missing, &grids);
+    CHECK_EQ(missing, 0);
+    CHECK(grids > 1000);
+    CHECK(hits > 100000);
+    printf("mirror grids: %ld, %ld hits of reflected camera rays, "
+           "%ld not listed\n", grids, hits, missing);
+    /* Only rays from the eye are reflections of camera rays. */
+    static rt_scene s1;
+    static rt_dir_grids g1;
+    s1.n_objects = 1;
+    s1.n_materials = 1;
+    s1.mat[0].reflect = FX_ONE / 2;
+    do
+        random_object(&s1.obj[0], 4.0);
+    while (s1.obj[0].kind != RT_QUAD);
+    s1.cam.eye = v3(0, 10, 0);
+    rt_dir_grids_prepare(&g1, &s1);
+    CHECK(rt_dir_mirror_of(&g1, 0, s1.cam.eye) != RT_DIR_NONE);
+    CHECK_EQ(rt_dir_mirror_of(&g1, 0, fx_v3_add(s1.cam.eye, fx_v3(1, 0, 0))),
+             RT_DIR_NONE);
+    s1.mat[0].bump = FX_ONE / 4; /* a bumped mirror: no image to cull by */
+    rt_dir_grids_prepare(&g1, &s1);
+    CHECK_EQ(rt_dir_mirror_of(&g1, 0, s1.cam.eye), RT_DIR_NONE);
     return th_summary();
 }
