@@ -300,7 +300,17 @@ $(FW_FLAGS_STAMP): fw-force | fw-check-board
 $(FW_BUILD)/core/%.o: core/%.c $(FW_FLAGS_STAMP) $(FW_EFFECTS)
 	@$(if $(Q),echo "  CC      $< ($(BOARD))")
 	$(Q)mkdir -p $(@D)
-	$(Q)$(FW_CC) $(FW_CFLAGS) $(CORE_WARN) -Icore -MMD -MP -c $< -o $@
+	$(Q)$(FW_CC) $(FW_CFLAGS) $(FW_EXTRA) $(CORE_WARN) -Icore -MMD -MP \
+	    -c $< -o $@
+
+# The core's set-up code runs once a render, before the first pixel (the
+# tracer's tables, the direction grids, the cut-off bounds, the scene's
+# derived fields): compiled for size, it leaves flash for the per-pixel
+# code, which -O2 makes faster. FW_COLD_OPT is empty where FW_OPT is -Os.
+FW_COLD_SRC := rt_tracer rt_dirgrid rt_cutoff rt_sealed rt_scene rt_features \
+    fx_trig
+FW_COLD_OPT := $(if $(filter -Os,$(FW_OPT)),,-Os)
+$(FW_COLD_SRC:%=$(FW_BUILD)/core/%.o): FW_EXTRA := $(FW_COLD_OPT)
 
 # libc.c must not have its loops turned back into calls to itself.
 $(FW_BUILD)/port/baremetal/libc.o: FW_EXTRA := -fno-tree-loop-distribute-patterns
