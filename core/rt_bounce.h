@@ -48,8 +48,14 @@ static inline int32_t rt_renorm_c(int32_t c, int32_t e)
  * one: three multiplies instead of one on the Cortex-M3). */
 static inline fx_dir3 rt_renorm(fx_dir3 u)
 {
-    /* t >> FX_UBITS is fx_d3_renorm's e. */
-    const int64_t t = rt_dot_raw(u, u) - ((int64_t)1 << (2 * FX_UBITS)) +
+    /* t >> FX_UBITS is fx_d3_renorm's e. |u|^2 on the M0 from three
+     * squares, each three 32-bit products (#17: fewer than a dot
+     * product's twelve). */
+    const int64_t uu =
+        FX_SOFT_MUL64 ? (int64_t)(rt_square_soft(u.x) + rt_square_soft(u.y) +
+                                  rt_square_soft(u.z))
+                      : rt_dot_raw(u, u);
+    const int64_t t = uu - ((int64_t)1 << (2 * FX_UBITS)) +
                       ((int64_t)1 << (FX_UBITS - 1));
     /* |e| <= 2^15 (in 2^-FX_UBITS): -2^(2U-15) <= t < 2^(2U-15) + 2^U. */
     const uint64_t lo = (uint64_t)1 << (2 * FX_UBITS - 15);

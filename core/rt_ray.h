@@ -32,7 +32,7 @@ typedef struct {
  * (oc.d) / |d|^2, not oc.d: without the factor its error is e |oc|; with
  * t (1 - e) it is e^2 |oc|. The bounding-sphere test applies it. */
 
-/* c^2 exact for |c| <= 2^30, from |c| = h 2^16 + l: h^2 2^32 + h l 2^17
+/* c^2 exact for |c| < 2^31, from |c| = h 2^16 + l: h^2 2^32 + h l 2^17
  * + l^2, three 32-bit products (h < 2^15, l < 2^16). */
 static inline uint64_t rt_square_soft(int32_t c)
 {
@@ -107,12 +107,49 @@ static inline int32_t rt_mulsh_soft(int32_t a, int32_t c, unsigned s)
                      (uint32_t)(low >> k));
 }
 
-/* fx_d3_dot_raw(a, b), the same exact value (rt_dot3_soft on the M0). */
+/* One term of rt_dot3_unit_soft: x y split at 16 bits with signed low
+ * halves, x = xh 2^16 + xl with -2^15 <= xl < 2^15, added to the running
+ * sums of the high, the two middle and the low partial products. */
+#define RT_DOT_STEP(xv, yv)                                                  \
+    do {                                                                     \
+        const int32_t xl_ = (int16_t)(xv), yl_ = (int16_t)(yv);              \
+        const int32_t xh_ = ((xv)-xl_) >> 16, yh_ = ((yv)-yl_) >> 16;        \
+        hh += xh_ * yh_;                                                     \
+        m1 += xh_ * yl_;                                                     \
+        m2 += xl_ * yh_;                                                     \
+        ll += xl_ * yl_;                                                     \
+    } while (0)
+
+/* x0 y0 + x1 y1 + x2 y2 exact for unit-vector components (each within
+ * 2^30 + 2^16), as rt_dot3_soft, in fewer instructions: with signed low
+ * halves |xh| <= 2^14 + 1 and |xl| <= 2^15, so the three high products
+ * and each set of three middle ones sum below 2^31 in 32 bits (3 (2^14 +
+ * 1) 2^15 < 2^31), and only the low ones (up to 2^30 each) need 64 bits.
+ * For the M0 (#17: 125 -> 94 instructions a call; the seed 2.2 % fewer
+ * with rt_renorm's squares). */
+RT_NOINLINE static int64_t rt_dot3_unit_soft(int32_t x0, int32_t x1,
+                                             int32_t x2, int32_t y0,
+                                             int32_t y1, int32_t y2)
+{
+    int32_t hh = 0, m1 = 0, m2 = 0;
+    int64_t ll = 0;
+    RT_DOT_STEP(x0, y0);
+    RT_DOT_STEP(x1, y1);
+    RT_DOT_STEP(x2, y2);
+    const uint64_t mid1 = fx_pair64((uint32_t)(m1 >> 16), (uint32_t)m1 << 16);
+    const uint64_t mid2 = fx_pair64((uint32_t)(m2 >> 16), (uint32_t)m2 << 16);
+    return (int64_t)(fx_pair64((uint32_t)hh, 0) + mid1 + mid2 +
+                     (uint64_t)ll);
+}
+#undef RT_DOT_STEP
+
+/* fx_d3_dot_raw(a, b), the same exact value (rt_dot3_unit_soft on the
+ * M0). */
 static inline int64_t rt_dot_raw(fx_dir3 a, fx_dir3 b)
 {
     if (!FX_SOFT_MUL64)
         return fx_d3_dot_raw(a, b);
-    return rt_dot3_soft(a.x, a.y, a.z, b.x, b.y, b.z);
+    return rt_dot3_unit_soft(a.x, a.y, a.z, b.x, b.y, b.z);
 }
 
 /* fx_pd_dot_raw(p, d), the same exact value (rt_dot3_soft on the M0). */

@@ -5,12 +5,15 @@
  * vectors, and on at least 1,000,000 seeded pseudo-random vectors per
  * operation. Dot, cross and the squared length are exact or rounded once;
  * length is correctly rounded; normalize is within 1 ulp per component.
+ * The M0's exact dot products and squares from 16-bit halves (rt_ray.h)
+ * equal the 64-bit ones.
  */
 #include <math.h>
 #include <stdint.h>
 
 #include "fx_dir.h"
 #include "harness.h"
+#include "rt_ray.h"
 
 typedef __int128 i128;
 typedef unsigned __int128 u128;
@@ -409,8 +412,65 @@ static void test_unit_vectors(void)
     CHECK(n.x == 0 && n.y == FX_UONE && n.z == 0);
 }
 
+/* A unit-vector component: anywhere within 2^30 + 2^16, often at the
+ * edges of rt_dot3_unit_soft's range and of its 16-bit halves. */
+static int32_t unit_component(void)
+{
+    const int64_t lim = ((int64_t)1 << 30) + (1 << 16);
+    int64_t v;
+    switch (rnd64() % 6) {
+    case 0: /* the range's ends */
+        v = lim - (int64_t)(rnd64() % 70000);
+        break;
+    case 1: /* low half -2^15 (the signed split's edge) */
+        v = -32768 + 65536 * ((int64_t)(rnd64() % 16385) - 8192) * 2;
+        break;
+    case 2: /* small */
+        v = (int64_t)(rnd64() % 200) - 100;
+        break;
+    default:
+        v = (int64_t)(rnd64() % (uint64_t)(2 * lim + 1)) - lim;
+    }
+    v = v > lim ? lim : v;
+    return (int32_t)((rnd64() & 1) ? v : -v);
+}
+
+static void test_soft_dots(void)
+{
+    long bad_unit = 0, bad_any = 0, bad_sq = 0;
+    for (long i = 0; i < N_RANDOM; i++) {
+        int32_t a[3], b[3], c[3], d[3];
+        for (int k = 0; k < 3; k++) {
+            a[k] = unit_component();
+            b[k] = unit_component();
+            c[k] = (int32_t)rnd32();
+            d[k] = (int32_t)rnd32();
+        }
+        const int64_t ab = (int64_t)a[0] * b[0] + (int64_t)a[1] * b[1] +
+                           (int64_t)a[2] * b[2];
+        bad_unit += rt_dot3_unit_soft(a[0], a[1], a[2], b[0], b[1], b[2]) !=
+                    ab;
+        /* Any int32 values: the sum of three products may wrap int64 at
+         * the extremes, as rt_dot3_soft's contract excludes; compare
+         * modulo 2^64. */
+        const uint64_t cd = (uint64_t)((int64_t)c[0] * d[0]) +
+                            (uint64_t)((int64_t)c[1] * d[1]) +
+                            (uint64_t)((int64_t)c[2] * d[2]);
+        bad_any += (uint64_t)rt_dot3_soft(c[0], c[1], c[2], d[0], d[1],
+                                          d[2]) != cd;
+        const int32_t e = (int32_t)rnd32() >> (rnd64() % 32);
+        bad_sq += rt_square_soft(e == INT32_MIN ? INT32_MAX : e) !=
+                  (uint64_t)((int64_t)(e == INT32_MIN ? INT32_MAX : e) *
+                             (e == INT32_MIN ? INT32_MAX : e));
+    }
+    CHECK_EQ(bad_unit, 0);
+    CHECK_EQ(bad_any, 0);
+    CHECK_EQ(bad_sq, 0);
+}
+
 int main(void)
 {
+    test_soft_dots();
     test_unit_vectors();
     test_componentwise();
     test_madd_unit();
