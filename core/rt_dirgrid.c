@@ -100,7 +100,7 @@ static fx_t cells_per_unit(fx_t lo, fx_t hi)
 
 void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
                          const rt_scene *s, fx_vec3 lp, fx_t radius,
-                         int every_way)
+                         int every_way, unsigned skip)
 {
     const unsigned n = s->n_objects;
     uint32_t *out = g->out;
@@ -132,6 +132,8 @@ void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
     for (int pass = every_way != 0; pass < 2 && x0 > x1; pass++)
         for (unsigned i = 0; i < n; i++) {
             cone_box b;
+            if (i == skip)
+                continue;
             cone_of(&b, &s->obj[i], lp, slack);
             if (pass == 0 && (b.all || b.hi_x - b.lo_x > WIDE ||
                               b.hi_z - b.lo_z > WIDE))
@@ -165,6 +167,8 @@ void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
 
     for (unsigned i = 0; i < n; i++) {
         cone_box b;
+        if (i == skip)
+            continue;
         cone_of(&b, &s->obj[i], lp, slack);
         unsigned ix0 = 0, ix1 = N - 1, iz0 = 0, iz1 = N - 1;
         int lower = 1, upper = 1;
@@ -195,13 +199,13 @@ void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
 /* Takes the next grid from the pool, or returns RT_DIR_NONE. */
 static uint8_t add_grid(rt_dir_grids *gs, unsigned *used, unsigned *next,
                         const rt_scene *s, fx_vec3 centre, fx_t radius,
-                        int every_way)
+                        int every_way, unsigned skip)
 {
     const unsigned size = 2u * N * N * gs->words;
     if (*used >= RT_DIR_MAX_GRIDS || *next + size > RT_DIR_POOL_WORDS)
         return RT_DIR_NONE;
     rt_dir_grid_prepare(&gs->grid[*used], gs->pool + *next, gs->words, s,
-                        centre, radius, every_way);
+                        centre, radius, every_way, skip);
     *next += size;
     return (uint8_t)(*used)++;
 }
@@ -268,9 +272,11 @@ void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s)
                          i < RT_MAX_LIGHTS;
          i++)
         gs->light[i] =
-            add_grid(gs, &used, &next, s, s->light[i].pos, 0, 0);
+            add_grid(gs, &used, &next, s, s->light[i].pos, 0, 0,
+                     RT_NO_OBJECT);
     /* Then camera rays' reflections in unbumped mirror quads (a floor):
-     * as many as the camera rays that hit them. */
+     * as many as the camera rays that hit them. The quad is left out:
+     * its rays skip it (a quad is convex, rt_nearest's skip). */
     for (unsigned i = 0; RT_HAS_REFLECTION && i < s->n_objects; i++) {
         const rt_object *o = &s->obj[i];
         const rt_material *m = &s->mat[o->material];
@@ -278,13 +284,14 @@ void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s)
         fx_t radius;
         if (o->kind == RT_QUAD && m->reflect > 0 && m->bump == 0 &&
             mirror_eye(o, s->cam.eye, &c, &radius))
-            gs->mirror[i] = add_grid(gs, &used, &next, s, c, radius, 0);
+            gs->mirror[i] = add_grid(gs, &used, &next, s, c, radius, 0, i);
     }
     for (unsigned i = 0; RT_HAS_SECONDARY && i < s->n_objects; i++) {
         const rt_object *o = &s->obj[i];
         const rt_material *m = &s->mat[o->material];
         if (m->reflect > 0 || m->transparency > 0)
-            gs->from[i] = add_grid(gs, &used, &next, s, o->bc, o->br, 1);
+            gs->from[i] =
+                add_grid(gs, &used, &next, s, o->bc, o->br, 1, RT_NO_OBJECT);
     }
 }
 

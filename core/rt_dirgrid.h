@@ -45,13 +45,14 @@ typedef struct {
 void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s);
 
 /* Fills g (its bit sets at cell, 2 RT_DIR_GRID^2 * words words) with the
- * objects of s a ray from within radius of centre can hit. every_way: the
- * rays leave the ball in every direction (from an object's surface), so
- * the grid spans every direction; else (from a light or a point) only
- * those of the objects that subtend a small angle. */
+ * objects of s but skip (RT_NO_OBJECT: none) a ray from within radius of
+ * centre can hit. every_way: the rays leave the ball in every direction
+ * (from an object's surface), so the grid spans every direction; else
+ * (from a light or a point) only those of the objects that subtend a
+ * small angle. */
 void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
                          const rt_scene *s, fx_vec3 centre, fx_t radius,
-                         int every_way);
+                         int every_way, unsigned skip);
 
 /* floor(d s / 2^32) for 0 <= d <= 2^17, 0 <= s < 2^31 and d s <= 2^35:
  * a cell index. On the M0, from s's 16-bit halves and d's: floor(d s /

@@ -126,7 +126,7 @@ static void shadow_trial(double spread, long *hits, long *missing)
         ? fx_v3_add(near->bc, v3(uni(-2, 2), uni(-2, 2), uni(-2, 2)))
         : v3(uni(-spread, spread), uni(-spread, spread),
              uni(-spread, spread));
-    rt_dir_grid_prepare(&g, cell, 1, &s, lp, 0, 0);
+    rt_dir_grid_prepare(&g, cell, 1, &s, lp, 0, 0, RT_NO_OBJECT);
     for (int k = 0; k < 400; k++) {
         const rt_object *b = &s.obj[th_rnd64(&rng) % s.n_objects];
         fx_vec3 q = graze_point(lp, b->bc, b->br);
@@ -155,7 +155,8 @@ static void leaving_trial(double spread, long *hits, long *missing)
     static uint32_t cell[2 * RT_DIR_GRID * RT_DIR_GRID];
     random_scene(&s, spread);
     const rt_object *from = &s.obj[th_rnd64(&rng) % s.n_objects];
-    rt_dir_grid_prepare(&g, cell, 1, &s, from->bc, from->br, 1);
+    rt_dir_grid_prepare(&g, cell, 1, &s, from->bc, from->br, 1,
+                        RT_NO_OBJECT);
     for (int k = 0; k < 400; k++) {
         const rt_object *b = &s.obj[th_rnd64(&rng) % s.n_objects];
         fx_vec3 o = graze_point(from->bc, from->bc, from->br);
