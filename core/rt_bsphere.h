@@ -151,10 +151,17 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         int32_t hy = oy - mul_round_u(t32, ray->d.y);
         int32_t hz = oz - mul_round_u(t32, ray->d.z);
         /* One ulp of slack (r < 2^29 here): the rounding of h cannot
-         * decide this. */
+         * decide this. On the M0 one unsigned compare a component: h +
+         * rs, mod 2^32, is at most 2 rs exactly when |h| <= rs, as |h| <
+         * 2^31 and rs < 2^30 (#17: 24 instructions a pixel; on the M3 2
+         * more). */
         const int32_t rs = r + 1;
-        if (hx > rs || hx < -rs || hy > rs || hy < -rs || hz > rs ||
-            hz < -rs)
+        const uint32_t urs = (uint32_t)rs;
+        if (FX_SOFT_MUL64 ? (uint32_t)hx + urs > 2u * urs ||
+                                (uint32_t)hy + urs > 2u * urs ||
+                                (uint32_t)hz + urs > 2u * urs
+                          : hx > rs || hx < -rs || hy > rs || hy < -rs ||
+                                hz > rs || hz < -rs)
             return 0;
         h[0] = hx;
         h[1] = hy;
