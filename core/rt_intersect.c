@@ -201,6 +201,18 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
             v = qx * o->pv.x + qy * o->pv.y + qz * o->pv.z;
         }
     }
+    /* The common case first, without the 64-bit bounds below: high
+     * words of u and v in [0, lu 2^(FX_UBITS - 32)) and [0, lv
+     * 2^(FX_UBITS - 32)) are inside them (lu, lv > 0, rt_scene.c; #17:
+     * 25 and 52 instructions a pixel on the M3 and the M0). */
+    if ((uint32_t)((uint64_t)u >> 32) <
+            (uint32_t)o->lu >> ((32 - FX_UBITS) & 31) &&
+        (uint32_t)((uint64_t)v >> 32) <
+            (uint32_t)o->lv >> ((32 - FX_UBITS) & 31)) {
+        *t = tt;
+        *part = 0;
+        return 1;
+    }
     /* Inclusive by RT_QUAD_SLACK ulps plus 2^-(FX_UBITS + 1) of the quad's
      * size: pu and pv are rounded to 2^-FX_UBITS, so (p - a).pu at a
      * shared edge can land just outside both neighbours, by an amount
