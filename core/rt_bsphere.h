@@ -100,6 +100,30 @@ static inline int32_t mul_round_u(int32_t t, int32_t d)
     return (int32_t)((fx_imul64(t, d) + UHALF) >> FX_UBITS);
 }
 
+/* x^2 + y^2 + z^2, exact, for |x|, |y|, |z| <= 2^29 (bsphere's h).
+ * Where 64-bit products are built from 16-bit ones (the M0), from halves
+ * with signed low parts, x = h 2^16 + l with |h| <= 2^13 and -2^15 <= l
+ * < 2^15: the three terms' h^2 (below 2^28 summed), h l (below 2^30) and
+ * l^2 (below 2^32, unsigned) are summed first and joined once, as x^2 =
+ * h^2 2^32 + h l 2^17 + l^2 (#17: 17 instructions a pixel on the M0,
+ * as against three soft products). */
+static inline uint64_t len2_small(int32_t x, int32_t y, int32_t z)
+{
+    if (!FX_SOFT_MUL64)
+        return (uint64_t)fx_imul64(x, x) + (uint64_t)fx_imul64(y, y) +
+               (uint64_t)fx_imul64(z, z);
+    const int32_t xh = (x + 32768) >> 16, yh = (y + 32768) >> 16;
+    const int32_t zh = (z + 32768) >> 16;
+    const int32_t xl = x - xh * 65536, yl = y - yh * 65536;
+    const int32_t zl = z - zh * 65536;
+    const uint32_t hh = (uint32_t)(xh * xh + yh * yh + zh * zh);
+    const int32_t m = xh * xl + yh * yl + zh * zl;
+    const uint32_t ll = (uint32_t)(xl * xl) + (uint32_t)(yl * yl) +
+                        (uint32_t)(zl * zl);
+    return fx_pair64(hh, 0) +
+           fx_pair64((uint32_t)(m >> 15), (uint32_t)m << 17) + ll;
+}
+
 /* t e 2^-32 rounded (ties up), for bsphere's closest approach in units
  * of |d|. e = |d|^2 - 1 (rt_ray.e) is a few Q32.32 ulps: where 64-bit
  * products are built from 16-bit ones (the M0), two 32-bit products of
@@ -172,10 +196,9 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         h[0] = hx;
         h[1] = hy;
         h[2] = hz;
-        /* 32-bit squares: one multiply each on a Cortex-M3, four 16-bit
-         * ones inline on an M0 (not the library's 64-bit multiply). */
-        h2 = (uint64_t)fx_imul64(hx, hx) + (uint64_t)fx_imul64(hy, hy) +
-             (uint64_t)fx_imul64(hz, hz);
+        /* 32-bit squares: one multiply each on a Cortex-M3, three
+         * 16-bit ones inline on an M0 (len2_small). */
+        h2 = len2_small(hx, hy, hz);
         t = t32;
     } else {
         int64_t ox = (int64_t)c.x - ray->o.x;
