@@ -162,7 +162,10 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         int64_t q = dot_small(ox, ray->d.x, oy, ray->d.y, oz, ray->d.z);
         /* |t| <= |oc| < sqrt(3) 2^30, so t fits; t +- r may not. */
         int32_t t32 = (int32_t)((q + UHALF) >> FX_UBITS);
-        t32 -= unit_corr(t32, ray->e);
+        /* Nothing for an exact unit d (e = 0; #17: 5 instructions a
+         * pixel on either core). */
+        if (ray->e != 0)
+            t32 -= unit_corr(t32, ray->e);
 #if FX_HAVE_OVERFLOW_BUILTINS
         /* The same tests in 32 bits (r >= 0): t32 + r <= tmin is
          * t32 <= tmin - r, false when that underflows; t32 - r >= tmax is
