@@ -162,7 +162,11 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
         if (tq == 0xFFFFFFFFu)
             return 0;
     }
-    if ((int64_t)tq <= tmin || (int64_t)tq >= tmax)
+    /* On the M0 in 32 bits once tq fits (#17: 9 instructions a pixel;
+     * on the M3 2 more). */
+    if (FX_SOFT_MUL64 ? tq > (uint32_t)FX_MAX || (fx_t)tq <= tmin ||
+                            (fx_t)tq >= tmax
+                      : (int64_t)tq <= tmin || (int64_t)tq >= tmax)
         return 0;
     const fx_t tt = (fx_t)tq; /* below tmax, so it fits */
     int64_t u, v; /* 16 + FX_UBITS fraction bits */
