@@ -76,22 +76,52 @@ static inline int64_t dot_small(int32_t x0, int32_t y0, int32_t x1,
 /* t d 2^-FX_UBITS rounded to nearest (ties up), for |t| < 7 2^28 and
  * |d| <= 2^FX_UBITS (a closest approach and a unit component). Where
  * 64-bit products are built from 16-bit ones (the M0), the rounding is
- * taken from the partial products: t d = th dh 2^32 + m 2^16 + (the low
- * 16 bits of tl dl), and only m, below 2^32, needs more than 32 bits. */
+ * taken from the partial products: t d = th dh 2^32 + (a + b) 2^16 +
+ * tl dl for the middle ones a and b, whose sum may need 33 bits: each is
+ * split at bit sh = FX_UBITS - 16 and the low parts summed with the top
+ * of tl dl, all in 32 bits (#17: 10 instructions a pixel on the M0, as
+ * against their 64-bit sum). */
 static inline int32_t mul_round_u(int32_t t, int32_t d)
 {
     if (FX_SOFT_MUL64 && FX_UBITS > 16) {
         const int32_t th = t >> 16, dh = d >> 16;
         const uint32_t tl = (uint32_t)t & 0xFFFFu, dl = (uint32_t)d & 0xFFFFu;
-        const int64_t m = (int64_t)(th * (int32_t)dl) + (int32_t)tl * dh +
-                          ((tl * dl) >> 16) +
-                          ((int64_t)1 << ((FX_UBITS - 17) & 31));
+        const int sh = (FX_UBITS - 16) & 31;
+        const int32_t a = th * (int32_t)dl, b = (int32_t)tl * dh;
+        const uint32_t lo = (((uint32_t)a & ((1u << sh) - 1u)) +
+                             ((uint32_t)b & ((1u << sh) - 1u)) +
+                             ((tl * dl) >> 16) + (1u << ((sh - 1) & 31))) >>
+                            sh;
         /* |th dh 2^(32 - FX_UBITS)| < 7 2^28. (The & 31 keeps the shifts
          * of the branch not taken non-negative for static analysis.) */
-        return th * dh * (1 << (32 - FX_UBITS)) +
-               (int32_t)(m >> ((FX_UBITS - 16) & 31));
+        return th * dh * (1 << (32 - FX_UBITS)) + (a >> sh) + (b >> sh) +
+               (int32_t)lo;
     }
     return (int32_t)((fx_imul64(t, d) + UHALF) >> FX_UBITS);
+}
+
+/* x^2 + y^2 + z^2, exact, for |x|, |y|, |z| <= 2^29 (bsphere's h).
+ * Where 64-bit products are built from 16-bit ones (the M0), from halves
+ * with signed low parts, x = h 2^16 + l with |h| <= 2^13 and -2^15 <= l
+ * < 2^15: the three terms' h^2 (below 2^28 summed), h l (below 2^30) and
+ * l^2 (below 2^32, unsigned) are summed first and joined once, as x^2 =
+ * h^2 2^32 + h l 2^17 + l^2 (#17: 17 instructions a pixel on the M0,
+ * as against three soft products). */
+static inline uint64_t len2_small(int32_t x, int32_t y, int32_t z)
+{
+    if (!FX_SOFT_MUL64)
+        return (uint64_t)fx_imul64(x, x) + (uint64_t)fx_imul64(y, y) +
+               (uint64_t)fx_imul64(z, z);
+    const int32_t xh = (x + 32768) >> 16, yh = (y + 32768) >> 16;
+    const int32_t zh = (z + 32768) >> 16;
+    const int32_t xl = x - xh * 65536, yl = y - yh * 65536;
+    const int32_t zl = z - zh * 65536;
+    const uint32_t hh = (uint32_t)(xh * xh + yh * yh + zh * zh);
+    const int32_t m = xh * xl + yh * yl + zh * zl;
+    const uint32_t ll = (uint32_t)(xl * xl) + (uint32_t)(yl * yl) +
+                        (uint32_t)(zl * zl);
+    return fx_pair64(hh, 0) +
+           fx_pair64((uint32_t)(m >> 15), (uint32_t)m << 17) + ll;
 }
 
 /* t e 2^-32 rounded (ties up), for bsphere's closest approach in units
@@ -132,7 +162,10 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         int64_t q = dot_small(ox, ray->d.x, oy, ray->d.y, oz, ray->d.z);
         /* |t| <= |oc| < sqrt(3) 2^30, so t fits; t +- r may not. */
         int32_t t32 = (int32_t)((q + UHALF) >> FX_UBITS);
-        t32 -= unit_corr(t32, ray->e);
+        /* Nothing for an exact unit d (e = 0; #17: 5 instructions a
+         * pixel on either core). */
+        if (ray->e != 0)
+            t32 -= unit_corr(t32, ray->e);
 #if FX_HAVE_OVERFLOW_BUILTINS
         /* The same tests in 32 bits (r >= 0): t32 + r <= tmin is
          * t32 <= tmin - r, false when that underflows; t32 - r >= tmax is
@@ -151,18 +184,24 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         int32_t hy = oy - mul_round_u(t32, ray->d.y);
         int32_t hz = oz - mul_round_u(t32, ray->d.z);
         /* One ulp of slack (r < 2^29 here): the rounding of h cannot
-         * decide this. */
+         * decide this. On the M0 one unsigned compare a component: h +
+         * rs, mod 2^32, is at most 2 rs exactly when |h| <= rs, as |h| <
+         * 2^31 and rs < 2^30 (#17: 24 instructions a pixel; on the M3 2
+         * more). */
         const int32_t rs = r + 1;
-        if (hx > rs || hx < -rs || hy > rs || hy < -rs || hz > rs ||
-            hz < -rs)
+        const uint32_t urs = (uint32_t)rs;
+        if (FX_SOFT_MUL64 ? (uint32_t)hx + urs > 2u * urs ||
+                                (uint32_t)hy + urs > 2u * urs ||
+                                (uint32_t)hz + urs > 2u * urs
+                          : hx > rs || hx < -rs || hy > rs || hy < -rs ||
+                                hz > rs || hz < -rs)
             return 0;
         h[0] = hx;
         h[1] = hy;
         h[2] = hz;
-        /* 32-bit squares: one multiply each on a Cortex-M3, four 16-bit
-         * ones inline on an M0 (not the library's 64-bit multiply). */
-        h2 = (uint64_t)fx_imul64(hx, hx) + (uint64_t)fx_imul64(hy, hy) +
-             (uint64_t)fx_imul64(hz, hz);
+        /* 32-bit squares: one multiply each on a Cortex-M3, three
+         * 16-bit ones inline on an M0 (len2_small). */
+        h2 = len2_small(hx, hy, hz);
         t = t32;
     } else {
         int64_t ox = (int64_t)c.x - ray->o.x;
