@@ -2,20 +2,29 @@
 /* rt_texture: procedural textures and bump noise, owned by materials. */
 #include "rt_texture.h"
 
-/* Cell index of p - a along one axis for cells of size m->tex_scale:
- * floor((p - a) / size), exact at any distance from the origin a (the
- * difference can exceed Q16.16, so it is formed in 64 bits). */
-static int64_t cell(const rt_material *m, fx_t p, fx_t a)
+/* Low word of the cell index of p - a along one axis for cells of size
+ * m->tex_scale, floor((p - a) / size), exact at any distance from the
+ * origin a: the texel needs only the parity of the sum. The difference
+ * is formed in 64 bits only when it exceeds Q16.16, that is when p and
+ * a differ in sign and so do p and the wrapped difference (#17: rt_texel
+ * 61 -> 42 instructions a call on the M3, 129 -> 108 on the M0). */
+static inline uint32_t cell(const rt_material *m, fx_t p, fx_t a)
 {
     fx_t rem;
-    return fx_floor_div((int64_t)p - a, m->tex_scale, m->tex_rcp, &rem);
+    uint32_t d = (uint32_t)p - (uint32_t)a;
+    if ((((uint32_t)p ^ (uint32_t)a) & ((uint32_t)p ^ d)) >> 31)
+        return (uint32_t)fx_floor_div((int64_t)p - a, m->tex_scale,
+                                      m->tex_rcp, &rem);
+    return (uint32_t)fx_floor_div((int32_t)((int64_t)p - a), m->tex_scale,
+                                  m->tex_rcp, &rem);
 }
 
 /* Textures follow the object, not the world origin: cells count from the
- * object's first point o->a. */
+ * object's first point o->a. The unsigned sums wrap by definition and
+ * keep the parity. */
 unsigned rt_texel(const rt_material *m, const rt_object *o, fx_vec3 p)
 {
-    int64_t idx;
+    uint32_t idx;
     switch (m->texture) {
     case RT_TEX_STRIPES:
         idx = m->axis == 0 ? cell(m, p.x, o->a.x)
@@ -32,7 +41,7 @@ unsigned rt_texel(const rt_material *m, const rt_object *o, fx_vec3 p)
     default:
         return 0;
     }
-    return (unsigned)(idx & 1);
+    return idx & 1u;
 }
 
 /* Lattice value in [-1, 1) with 30 fraction bits (17 significant): the
