@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* rt_texture: procedural textures and bump noise, owned by materials. */
 #include "rt_texture.h"
+#include "fx_rsqrt.h" /* fx_umulhi32 */
 
 /* Low word of the cell index of p - a along one axis for cells of size
  * m->tex_scale, floor((p - a) / size), exact at any distance from the
@@ -124,17 +125,49 @@ static void noise3(const uint32_t i[3], const int32_t s[3], int32_t g[3])
     }
 }
 
+/* One 15-bit digit of a quotient by d <= 2^17: q = floor(x / d) for x
+ * < 2^32, its remainder to *r. Where the core has no divide instruction
+ * (FX_SOFT_MUL64), floor(x rcp / 2^32) with rcp = fx_floor_rcp(d) is
+ * never above q and at most 2 below it (rcp > (2^32 - 1) / d - 1), and
+ * the remainder, below 3d, corrects it. */
+static inline uint32_t frac_digit(uint32_t x, uint32_t d, uint32_t rcp,
+                                  uint32_t *r)
+{
+    if (!FX_SOFT_MUL64) {
+        uint32_t q = x / d;
+        *r = x - q * d;
+        return q;
+    }
+    uint32_t q = fx_umulhi32(x, rcp), rr = x - q * d;
+    while (rr >= d) {
+        q++;
+        rr -= d;
+    }
+    *r = rr;
+    return q;
+}
+
 /* Lattice cell i = floor((p - a) / size) of one axis, exact, and the
  * fraction within it, rem / size, with NOISE_BITS fraction bits, rounded
- * down (rem < size, so the quotient is below 2^NOISE_BITS), smoothed. */
+ * down (rem < size, so the quotient is below 2^NOISE_BITS), smoothed.
+ * For a size up to 2 units (2^17) the fraction is two 15-bit digits,
+ * each r 2^15 < size 2^15 <= 2^32 (#17: a bumped hit 93 instructions
+ * cheaper on the M3, 300 on the M0). */
 static inline void lattice_axis(const rt_material *m, fx_t p, fx_t a,
                                 uint32_t *i, int32_t *s)
 {
+    const uint32_t d = (uint32_t)m->bump_scale;
     fx_t rem;
+    uint32_t f, r;
     *i = (uint32_t)fx_floor_div((int64_t)p - a, m->bump_scale, m->bump_rcp,
                                 &rem);
-    *s = smooth((int32_t)fx_udiv64_32((uint64_t)(uint32_t)rem << NOISE_BITS,
-                                      (uint32_t)m->bump_scale));
+    if (d <= 1u << 17) {
+        f = frac_digit((uint32_t)rem << 15, d, m->bump_rcp, &r) << 15;
+        f |= frac_digit(r << 15, d, m->bump_rcp, &r);
+    } else {
+        f = fx_udiv64_32((uint64_t)(uint32_t)rem << NOISE_BITS, d);
+    }
+    *s = smooth((int32_t)f);
 }
 
 fx_dir3 rt_bump(const rt_material *m, const rt_object *o, fx_vec3 p,
