@@ -152,15 +152,21 @@ static inline uint32_t frac_digit(uint32_t x, uint32_t d, uint32_t rcp,
  * down (rem < size, so the quotient is below 2^NOISE_BITS), smoothed.
  * For a size up to 2 units (2^17) the fraction is two 15-bit digits,
  * each r 2^15 < size 2^15 <= 2^32 (#17: a bumped hit 93 instructions
- * cheaper on the M3, 300 on the M0). */
+ * cheaper on the M3, 300 on the M0). The cell is formed as in cell (#17:
+ * 31 instructions fewer a bumped hit on the M0). */
 static inline void lattice_axis(const rt_material *m, fx_t p, fx_t a,
                                 uint32_t *i, int32_t *s)
 {
     const uint32_t d = (uint32_t)m->bump_scale;
     fx_t rem;
     uint32_t f, r;
-    *i = (uint32_t)fx_floor_div((int64_t)p - a, m->bump_scale, m->bump_rcp,
-                                &rem);
+    uint32_t n = (uint32_t)p - (uint32_t)a;
+    if ((((uint32_t)p ^ (uint32_t)a) & ((uint32_t)p ^ n)) >> 31)
+        *i = (uint32_t)fx_floor_div((int64_t)p - a, m->bump_scale,
+                                    m->bump_rcp, &rem);
+    else
+        *i = (uint32_t)fx_floor_div((int32_t)((int64_t)p - a),
+                                    m->bump_scale, m->bump_rcp, &rem);
     if (d <= 1u << 17) {
         f = frac_digit((uint32_t)rem << 15, d, m->bump_rcp, &r) << 15;
         f |= frac_digit(r << 15, d, m->bump_rcp, &r);
