@@ -103,6 +103,16 @@ static int32_t smooth(int32_t f)
     return (int32_t)((fx_iumul64((int32_t)f2, w) + half) >> NOISE_BITS);
 }
 
+/* The lerp along x of seed's values at the corners x0 ^ yz and x1 ^ yz
+ * (the hash terms of two corners that differ in x only). noise3 writes
+ * its four out rather than loop over them (#17: a bumped hit 40
+ * instructions cheaper on the M3, 112 on the M0). */
+static inline int32_t edge(uint32_t x0, uint32_t x1, uint32_t yz,
+                           uint32_t seed, int32_t s)
+{
+    return lerp_k(lattice_k(x0 ^ yz, seed), lattice_k(x1 ^ yz, seed), s);
+}
+
 /* Trilinear value noise of seeds 1, 2 and 3 in lattice cell i
  * (coordinates modulo 2^32, as the hash takes them) at fractions s, with
  * NOISE_BITS fraction bits; the corners' terms of the hash are formed
@@ -116,12 +126,11 @@ static void noise3(const uint32_t i[3], const int32_t s[3], int32_t g[3])
                    z1 = z0 + 83492791u;
     const uint32_t yz[4] = { y0 ^ z0, y1 ^ z0, y0 ^ z1, y1 ^ z1 };
     for (uint32_t seed = 1; seed <= 3; seed++) {
-        int32_t yv[4];
-        for (int c = 0; c < 4; c++)
-            yv[c] = lerp_k(lattice_k(x0 ^ yz[c], seed),
-                           lattice_k(x1 ^ yz[c], seed), s[0]);
-        g[seed - 1] = lerp(lerp(yv[0], yv[1], s[1]),
-                           lerp(yv[2], yv[3], s[1]), s[2]);
+        const int32_t v0 = edge(x0, x1, yz[0], seed, s[0]),
+                      v1 = edge(x0, x1, yz[1], seed, s[0]),
+                      v2 = edge(x0, x1, yz[2], seed, s[0]),
+                      v3 = edge(x0, x1, yz[3], seed, s[0]);
+        g[seed - 1] = lerp(lerp(v0, v1, s[1]), lerp(v2, v3, s[1]), s[2]);
     }
 }
 
