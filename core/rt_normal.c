@@ -269,6 +269,18 @@ int rt_side_root(const rt_object *o, const rt_ray *r, fx_t t, int64_t *t30)
     return 1;
 }
 
+/* A sphere's normal component v rinv 2^-sh, rounded to nearest, for sh
+ * in 2..32: the 32-bit result from the product's two words, as two
+ * 32-bit shifts, not a 64-bit one (#17: 19 fewer instructions a call
+ * on the M3, 44 fewer on the M0). */
+static inline int32_t unit_c(int32_t v, uint32_t rinv, int sh)
+{
+    const uint64_t u =
+        (uint64_t)fx_iumul64(v, rinv) + ((uint32_t)1 << (sh - 1));
+    return (int32_t)(((uint32_t)u >> (sh - 1) >> 1) |
+                     ((uint32_t)(u >> 32) << (32 - sh)));
+}
+
 fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *pp,
                   uint16_t part, int precise)
 {
@@ -279,12 +291,10 @@ fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *pp,
          * rounding of p, a relative 2^-16 / r; fx_d3_renorm normalises in
          * full when that is more than 2^-15). */
         const int sh = 33 - fx_clz32((uint32_t)o->r); /* b + 1 */
-        const int64_t half = (int64_t)1 << (sh - 1);
         const fx_vec3 v = fx_v3_sub(p, o->a);
-        return fx_d3_renorm(
-            fx_d3((int32_t)((fx_iumul64(v.x, o->rinv) + half) >> sh),
-                  (int32_t)((fx_iumul64(v.y, o->rinv) + half) >> sh),
-                  (int32_t)((fx_iumul64(v.z, o->rinv) + half) >> sh)));
+        return fx_d3_renorm(fx_d3(unit_c(v.x, o->rinv, sh),
+                                  unit_c(v.y, o->rinv, sh),
+                                  unit_c(v.z, o->rinv, sh)));
     }
     case RT_QUAD:
         return o->n;
