@@ -142,21 +142,48 @@ RT_ALWAYS_INLINE static inline void frame_set(upright_frame *f,
      * o - bc and tca d (not bsphere's rounded h). Frame values near the
      * sphere are below 2^25: 32-bit operands. */
     const int dsh = FX_UBITS - sf;
-    f->p[0] = (int32_t)(shift_round(tca * r->d.x, dsh) -
-                        shift_round((int64_t)o->bc.x - r->o.x, -sf));
-    f->p[1] = (int32_t)(shift_round(tca * r->d.y, dsh) -
-                        shift_round((int64_t)o->bc.y - r->o.y, -sf));
-    f->p[2] = (int32_t)(shift_round(tca * r->d.z, dsh) -
-                        shift_round((int64_t)o->bc.z - r->o.z, -sf));
+    if (sf >= 0) {
+        /* Every shape up to 2^8 in radius: dsh is 7..30 and -sf <= 0,
+         * so each value is a 32-bit shift of a product's two words or of
+         * a difference's low word; on the M0 a tca within 32 bits takes
+         * fx_imul64, not the library's 64-bit multiply (#17: 28 fewer
+         * instructions a frame on the M3, 136 fewer on the M0). */
+        const uint32_t half = (uint32_t)1 << (dsh - 1);
+        const int t32 = FX_SOFT_MUL64 && tca == (int32_t)tca;
+        const uint64_t ux = (uint64_t)(t32 ? fx_imul64((int32_t)tca, r->d.x)
+                                           : tca * r->d.x) + half;
+        const uint64_t uy = (uint64_t)(t32 ? fx_imul64((int32_t)tca, r->d.y)
+                                           : tca * r->d.y) + half;
+        const uint64_t uz = (uint64_t)(t32 ? fx_imul64((int32_t)tca, r->d.z)
+                                           : tca * r->d.z) + half;
+        f->p[0] = (int32_t)((((uint32_t)ux >> dsh) |
+                             ((uint32_t)(ux >> 32) << (32 - dsh))) -
+                            (((uint32_t)o->bc.x - (uint32_t)r->o.x) << sf));
+        f->p[1] = (int32_t)((((uint32_t)uy >> dsh) |
+                             ((uint32_t)(uy >> 32) << (32 - dsh))) -
+                            (((uint32_t)o->bc.y - (uint32_t)r->o.y) << sf));
+        f->p[2] = (int32_t)((((uint32_t)uz >> dsh) |
+                             ((uint32_t)(uz >> 32) << (32 - dsh))) -
+                            (((uint32_t)o->bc.z - (uint32_t)r->o.z) << sf));
+        f->yb = (int32_t)(((uint32_t)o->a.y - (uint32_t)o->bc.y) << sf);
+        f->yt = (int32_t)(((uint32_t)o->a.y + (uint32_t)o->h -
+                           (uint32_t)o->bc.y) << sf);
+    } else {
+        f->p[0] = (int32_t)(shift_round(tca * r->d.x, dsh) -
+                            shift_round((int64_t)o->bc.x - r->o.x, -sf));
+        f->p[1] = (int32_t)(shift_round(tca * r->d.y, dsh) -
+                            shift_round((int64_t)o->bc.y - r->o.y, -sf));
+        f->p[2] = (int32_t)(shift_round(tca * r->d.z, dsh) -
+                            shift_round((int64_t)o->bc.z - r->o.z, -sf));
+        f->yb = (int32_t)shift_round((int64_t)o->a.y - o->bc.y, -sf);
+        f->yt = (int32_t)shift_round((int64_t)o->a.y + o->h - o->bc.y,
+                                     -sf);
+    }
     /* The direction with RT_FRAME_BITS fraction bits. */
     const int ush = FX_UBITS - RT_FRAME_BITS;
     f->d[0] = (int32_t)shift_round(r->d.x, ush);
     f->d[1] = (int32_t)shift_round(r->d.y, ush);
     f->d[2] = (int32_t)shift_round(r->d.z, ush);
-    /* Base and top, exact from the object's fields (the centre bc.y is
-     * a.y + h/2 rounded down). */
-    f->yb = (int32_t)shift_round((int64_t)o->a.y - o->bc.y, -sf);
-    f->yt = (int32_t)shift_round((int64_t)o->a.y + o->h - o->bc.y, -sf);
 }
 
 /* A side root this near tmax (2^-4, raw) is polished (rt_side_root)
