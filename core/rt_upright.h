@@ -179,11 +179,16 @@ RT_ALWAYS_INLINE static inline void frame_set(upright_frame *f,
         f->yt = (int32_t)shift_round((int64_t)o->a.y + o->h - o->bc.y,
                                      -sf);
     }
-    /* The direction with RT_FRAME_BITS fraction bits. */
+    /* The direction with RT_FRAME_BITS fraction bits, as shift_round
+     * gives it, in 32 bits (|d| <= 2^FX_UBITS): a 64-bit shift_round
+     * here kept both words of each (#17: 51 fewer instructions a frame
+     * on the M3, 13 on the M0). */
     const int ush = FX_UBITS - RT_FRAME_BITS;
-    f->d[0] = (int32_t)shift_round(r->d.x, ush);
-    f->d[1] = (int32_t)shift_round(r->d.y, ush);
-    f->d[2] = (int32_t)shift_round(r->d.z, ush);
+    const int rs = ush > 0 ? ush : 0, ls = ush > 0 ? 0 : -ush;
+    const int32_t dh = (int32_t)(((int64_t)1 << rs) >> 1);
+    f->d[0] = ((r->d.x + dh) >> rs) * ((int32_t)1 << ls);
+    f->d[1] = ((r->d.y + dh) >> rs) * ((int32_t)1 << ls);
+    f->d[2] = ((r->d.z + dh) >> rs) * ((int32_t)1 << ls);
 }
 
 /* A side root this near tmax (2^-4, raw) is polished (rt_side_root)
