@@ -42,6 +42,21 @@ static int64_t shift_round(int64_t v, int n)
     return (v + ((int64_t)1 << (n - 1))) >> n;
 }
 
+/* a b, exact, for |a|, |b| <= 2^30 (frame values, and the coefficients
+ * quadratic() has scaled): on the M0 the two middle partial products,
+ * each below 2^30, are summed in 32 bits and added to the pair once
+ * (#17: 50 fewer instructions a hit_upright on the M0). */
+static inline int64_t frame_mul(int32_t a, int32_t b)
+{
+    if (!FX_SOFT_MUL64)
+        return fx_imul64(a, b);
+    const int32_t ah = a >> 16, bh = b >> 16;
+    const uint32_t al = (uint32_t)a & 0xFFFFu, bl = (uint32_t)b & 0xFFFFu;
+    const int32_t mid = ah * (int32_t)bl + (int32_t)al * bh;
+    return (int64_t)(fx_pair64((uint32_t)(ah * bh), al * bl) +
+                     fx_mid64(mid));
+}
+
 /* A product of two frame values back to RT_FRAME_BITS fraction bits,
  * rounded to nearest. */
 static inline int64_t frame_round(int64_t v)
@@ -99,8 +114,8 @@ RT_ALWAYS_INLINE static inline int quadratic(int64_t a, int64_t b,
         return 1;
     }
     /* a, b and c are now within 30 bits: 32-bit products. */
-    int64_t disc = fx_imul64((int32_t)b, (int32_t)b) -
-                   fx_imul64((int32_t)a, (int32_t)c);
+    int64_t disc = frame_mul((int32_t)b, (int32_t)b) -
+                   frame_mul((int32_t)a, (int32_t)c);
     if (disc < 0) {
         int64_t aa = a < 0 ? -a : a, ab = b < 0 ? -b : b;
         int64_t ac = c < 0 ? -c : c;
@@ -408,16 +423,16 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
     const int64_t one = (int64_t)1 << RT_FRAME_BITS;
 
     /* Side: x^2 + z^2 = R(y)^2, R = ur (cylinder) or k (yt - y) (cone). */
-    const int64_t pp = fx_imul64(px, px) + fx_imul64(pz, pz);
-    int64_t a = frame_round(fx_imul64(dx, dx) + fx_imul64(dz, dz));
-    int64_t b = frame_round(fx_imul64(px, dx) + fx_imul64(pz, dz));
-    int64_t c = frame_round(pp - fx_imul64(ur, ur));
+    const int64_t pp = frame_mul(px, px) + frame_mul(pz, pz);
+    int64_t a = frame_round(frame_mul(dx, dx) + frame_mul(dz, dz));
+    int64_t b = frame_round(frame_mul(px, dx) + frame_mul(pz, dz));
+    int64_t c = frame_round(pp - frame_mul(ur, ur));
     if (cone) {
         /* o->k is the slope with RT_FRAME_BITS fraction bits, below 2^30;
          * ky below 2^31 (|yt - py| < 2^25). */
         const int32_t kdy = (int32_t)frame_round(fx_imul64(o->k, dy));
         const int64_t ky = frame_round(fx_imul64(o->k, yt - py));
-        a -= frame_round(fx_imul64(kdy, kdy));
+        a -= frame_round(frame_mul(kdy, kdy));
         b += frame_round(mul_q(ky, kdy));
         c = frame_round(pp - (FX_SOFT_MUL64 && ky == (int32_t)ky
                                   ? fx_imul64((int32_t)ky, (int32_t)ky)
@@ -440,7 +455,7 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
         if (root[i] > 4 * one || root[i] < -4 * one)
             continue;
         /* |root| <= 2^(RT_FRAME_BITS + 2): 32-bit operands. */
-        int64_t y = py + frame_round(fx_imul64((int32_t)root[i], dy));
+        int64_t y = py + frame_round(frame_mul((int32_t)root[i], dy));
         /* The side reaches RT_RIM_SLACK frame ulps past each cap's
          * plane, as the caps reach past the side's radius below: the
          * two are rounded separately, and no ray may pass between. A
@@ -482,7 +497,7 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
      * takes a discriminant within its rounding for a tangent's.) */
     for (int i = 0; cone && i < n; i++)
         if (root[i] <= 4 * one && root[i] >= -4 * one &&
-            py + frame_round(fx_imul64((int32_t)root[i], dy)) >
+            py + frame_round(frame_mul((int32_t)root[i], dy)) >
                 yt - (int64_t)o->rinv)
             return upright_thin(o, r, tca, root[i], tmin, tmax, found, t,
                                 part);
