@@ -299,15 +299,30 @@ static inline int32_t unit_c(int32_t v, uint32_t rinv, int sh)
                      ((uint32_t)(u >> 32) << (32 - sh)));
 }
 
+/* c^2, exact: on the M0 from three 16-bit partial products, the middle
+ * one doubled by its shift (fx_imul64_soft takes four; #17: 15 fewer
+ * instructions a sphere's normal on the M0). */
+static inline int64_t square_c(int32_t c)
+{
+    if (!FX_SOFT_MUL64)
+        return fx_imul64(c, c);
+    const int32_t h = c >> 16;
+    const uint32_t l = (uint32_t)c & 0xFFFFu;
+    const int32_t m = h * (int32_t)l;
+    return (int64_t)(fx_pair64((uint32_t)(h * h), l * l) +
+                     fx_pair64((uint32_t)(m >> 15), (uint32_t)m << 17));
+}
+
 /* fx_d3_renorm(u), the same bits, with e = |u|^2 - 1 taken from the two
  * words of the sum of squares as a 32-bit value: from the 64-bit one the
  * compiler formed each c e as a 64-bit product (#17: 6 fewer
  * instructions a sphere's normal on the M3, 7 on the M0). */
 static inline fx_dir3 renorm_unit(fx_dir3 u)
 {
-    const uint64_t s = (uint64_t)(fx_d3_dot_raw(u, u) -
-                                  ((int64_t)1 << (2 * FX_UBITS)) +
-                                  ((int64_t)1 << (FX_UBITS - 1)));
+    const uint64_t s = (uint64_t)square_c(u.x) + (uint64_t)square_c(u.y) +
+                       (uint64_t)square_c(u.z) -
+                       ((uint64_t)1 << (2 * FX_UBITS)) +
+                       ((uint64_t)1 << (FX_UBITS - 1));
     /* |e| <= 2^(FX_UBITS - 15): s + 2^(2 FX_UBITS - 15) below
      * 2^(2 FX_UBITS - 14) + 2^FX_UBITS. */
     const uint64_t lim = (uint64_t)1 << (2 * FX_UBITS - 15);
