@@ -157,8 +157,9 @@ RT_ALWAYS_INLINE static inline void frame_set(upright_frame *f,
      * o - bc and tca d (not bsphere's rounded h). Frame values near the
      * sphere are below 2^25: 32-bit operands. */
     const int dsh = FX_UBITS - sf;
-    if (sf >= 0) {
-        /* Every shape up to 2^8 in radius: dsh is 7..30 and -sf <= 0,
+    /* sf <= 23 (ushift >= -15): dsh > 0 wherever FX_UBITS > 23. */
+    if (sf >= 0 && (FX_UBITS > 23 || dsh > 0)) {
+        /* Every shape up to 2^8 in radius: dsh is 1..30 and -sf <= 0,
          * so each value is a 32-bit shift of a product's two words or of
          * a difference's low word; on the M0 a tca within 32 bits takes
          * fx_imul64, not the library's 64-bit multiply (#17: 28 fewer
