@@ -110,12 +110,18 @@ RT_ALWAYS_INLINE static inline int quadratic(int64_t a, int64_t b,
                                              int64_t root[2])
 {
     /* A common scale brings the coefficients within 30 bits (only a
-     * flat cone's need it); the roots do not change. */
-    const uint64_t ua = (uint64_t)(a < 0 ? -a : a);
-    const uint64_t ub = (uint64_t)(b < 0 ? -b : b);
-    const uint64_t uc = (uint64_t)(c < 0 ? -c : c);
-    const uint64_t any = ua | ub | uc;
-    const int sh = any >> 30 ? 34 - fx_clz64(any) : 0;
+     * flat cone's need it); the roots do not change. The range test
+     * comes before the magnitudes (#17: 5 fewer instructions a call on
+     * the M3, 27 on the M0). */
+    const uint64_t lim = ((uint64_t)1 << 30) - 1; /* |v| < 2^30 */
+    int sh = 0;
+    if ((uint64_t)a + lim > 2 * lim || (uint64_t)b + lim > 2 * lim ||
+        (uint64_t)c + lim > 2 * lim) {
+        const uint64_t ua = (uint64_t)(a < 0 ? -a : a);
+        const uint64_t ub = (uint64_t)(b < 0 ? -b : b);
+        const uint64_t uc = (uint64_t)(c < 0 ? -c : c);
+        sh = 34 - fx_clz64(ua | ub | uc);
+    }
     int64_t lin_min = RT_LINEAR_MIN_B;
     if (sh > 0) {
         a = shift_round(a, sh);
