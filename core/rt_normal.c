@@ -354,7 +354,9 @@ fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *pp,
     case RT_MESH:
         if (!RT_HAS_MESH)
             return o->n; /* never hit in this build */
-        return rt_mesh_normal(o, p, part);
+        /* From *pp, not the copy p that the sphere's registers hold
+         * (#17: meshes scene 3.9 fewer instructions a pixel on the M0). */
+        return rt_mesh_normal(o, *pp, part);
     case RT_BOX: {
         /* part is the axis of the face; its side is the one p lies on. */
         const fx_t pc[3] = { p.x, p.y, p.z };
