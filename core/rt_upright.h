@@ -27,12 +27,6 @@
 #define RT_LINEAR_MIN_B ((int64_t)256 << (RT_FRAME_BITS - 16))
 #define RT_STEEP_MIN_A 256
 
-/* Bit length of v (0 for 0). */
-static int rt_bitlen64_i(uint64_t v)
-{
-    return v ? 64 - fx_clz64(v) : 0;
-}
-
 /* v 2^-n: rounded to nearest for n > 0, exact for n <= 0 (the callers
  * keep v 2^-n within 64 bits). */
 static int64_t shift_round(int64_t v, int n)
@@ -42,28 +36,26 @@ static int64_t shift_round(int64_t v, int n)
     return (v + ((int64_t)1 << (n - 1))) >> n;
 }
 
-/* The low 32 bits of (a b + 2^(n - 1)) 2^-n for 16 < n <= 32, on the
- * M0: the product's 16-bit columns as fx_imul64_soft's partial products
- * give them, in 32-bit values. 2^(n - 1) is a multiple of 2^16, so the
- * product's low 16 bits do not reach it; with s = n - 16 the result is
- * hi 2^(16 - s) + (the next 16 bits + 2^(s - 1)) 2^-s. */
-static inline uint32_t mul_round_cols(int32_t a, int32_t b, int n)
+/* The low 32 bits of (t b + 2^(n - 1)) 2^-n, 0 < n < 32. On the M0, for
+ * n > 16 and a 32-bit t, from t b's 16-bit columns in 32 bits: with s = n
+ * - 16, hi 2^(16 - s) + (next 16 + 2^(s - 1)) 2^-s (no carry below). */
+static inline uint32_t frame_td(int64_t t, int32_t b, int n)
 {
-    const int s = n - 16;
-    const int32_t ah = a >> 16, bh = b >> 16;
-    const uint32_t al = (uint32_t)a & 0xFFFFu, bl = (uint32_t)b & 0xFFFFu;
-    const uint32_t ll = al * bl;
-    const int32_t t = ah * (int32_t)bl + (int32_t)(ll >> 16);
-    const int32_t u = (int32_t)al * bh + (int32_t)((uint32_t)t & 0xFFFFu);
-    const uint32_t hi = (uint32_t)(ah * bh + (t >> 16) + (u >> 16));
-    const uint32_t w = ((uint32_t)u & 0xFFFFu) + ((uint32_t)1 << (s - 1));
-    return (hi << (16 - s)) + (w >> s);
+    if (!FX_SOFT_MUL64 || t != (int32_t)t || n <= 16) {
+        const uint64_t u = (uint64_t)(t * b) + ((uint32_t)1 << (n - 1));
+        return ((uint32_t)u >> n) | ((uint32_t)(u >> 32) << (32 - n));
+    }
+    const int32_t ah = (int32_t)t >> 16, bh = b >> 16, s = n - 16;
+    const uint32_t al = (uint32_t)t & 0xFFFFu, bl = (uint32_t)b & 0xFFFFu;
+    const int32_t m = ah * (int32_t)bl + (int32_t)((al * bl) >> 16);
+    const int32_t u = (int32_t)al * bh + (m & 0xFFFF);
+    const uint32_t w = ((uint32_t)u & 0xFFFFu) + (1u << (s - 1));
+    return ((uint32_t)(ah * bh + (m >> 16) + (u >> 16)) << (16 - s)) +
+           (w >> s);
 }
 
-/* a b, exact, for |a|, |b| <= 2^30 (frame values, and the coefficients
- * quadratic() has scaled): on the M0 the two middle partial products,
- * each below 2^30, are summed in 32 bits and added to the pair once
- * (#17: 50 fewer instructions a hit_upright on the M0). */
+/* a b, exact, |a|, |b| <= 2^30: on the M0 with the middle partial products
+ * (below 2^30) summed in 32 bits (#17: 50 fewer instructions a hit). */
 static inline int64_t frame_mul(int32_t a, int32_t b)
 {
     if (!FX_SOFT_MUL64)
@@ -71,8 +63,7 @@ static inline int64_t frame_mul(int32_t a, int32_t b)
     const int32_t ah = a >> 16, bh = b >> 16;
     const uint32_t al = (uint32_t)a & 0xFFFFu, bl = (uint32_t)b & 0xFFFFu;
     const int32_t mid = ah * (int32_t)bl + (int32_t)al * bh;
-    return (int64_t)(fx_pair64((uint32_t)(ah * bh), al * bl) +
-                     fx_mid64(mid));
+    return (int64_t)(fx_pair64((uint32_t)(ah * bh), al * bl) + fx_mid64(mid));
 }
 
 /* A product of two frame values back to RT_FRAME_BITS fraction bits,
@@ -110,18 +101,15 @@ RT_ALWAYS_INLINE static inline int quadratic(int64_t a, int64_t b,
                                              int64_t root[2])
 {
     /* A common scale brings the coefficients within 30 bits (only a
-     * flat cone's need it); the roots do not change. The range test
-     * comes before the magnitudes (#17: 5 fewer instructions a call on
-     * the M3, 27 on the M0). */
+     * flat cone's need it); the roots do not change. A range test first
+     * (#17: 5 fewer instructions a call on the M3, 27 on the M0). */
     const uint64_t lim = ((uint64_t)1 << 30) - 1; /* |v| < 2^30 */
     int sh = 0;
     if ((uint64_t)a + lim > 2 * lim || (uint64_t)b + lim > 2 * lim ||
-        (uint64_t)c + lim > 2 * lim) {
-        const uint64_t ua = (uint64_t)(a < 0 ? -a : a);
-        const uint64_t ub = (uint64_t)(b < 0 ? -b : b);
-        const uint64_t uc = (uint64_t)(c < 0 ? -c : c);
-        sh = 34 - fx_clz64(ua | ub | uc);
-    }
+        (uint64_t)c + lim > 2 * lim)
+        sh = 34 - fx_clz64((uint64_t)(a < 0 ? -a : a) |
+                           (uint64_t)(b < 0 ? -b : b) |
+                           (uint64_t)(c < 0 ? -c : c));
     int64_t lin_min = RT_LINEAR_MIN_B;
     if (sh > 0) {
         a = shift_round(a, sh);
@@ -181,33 +169,18 @@ RT_ALWAYS_INLINE static inline void frame_set(upright_frame *f,
      * o - bc and tca d (not bsphere's rounded h). Frame values near the
      * sphere are below 2^25: 32-bit operands. */
     const int dsh = FX_UBITS - sf;
-    /* sf <= 23 (ushift >= -15): dsh > 0 wherever FX_UBITS > 23. */
-    if (sf >= 0 && (FX_UBITS > 23 || dsh > 0)) {
-        /* Every shape up to 2^8 in radius: dsh is 1..30 and -sf <= 0,
-         * so each value is a 32-bit shift of a product's two words or of
-         * a difference's low word; on the M0 a tca within 32 bits takes
-         * mul_round_cols, not the library's 64-bit multiply (#17: 28
-         * fewer instructions a frame on the M3, 178 fewer on the M0). */
-        uint32_t tx, ty, tz;
-        if (FX_SOFT_MUL64 && tca == (int32_t)tca && dsh > 16) {
-            tx = mul_round_cols((int32_t)tca, r->d.x, dsh);
-            ty = mul_round_cols((int32_t)tca, r->d.y, dsh);
-            tz = mul_round_cols((int32_t)tca, r->d.z, dsh);
-        } else {
-            const uint32_t half = (uint32_t)1 << (dsh - 1);
-            const uint64_t ux = (uint64_t)(tca * r->d.x) + half;
-            const uint64_t uy = (uint64_t)(tca * r->d.y) + half;
-            const uint64_t uz = (uint64_t)(tca * r->d.z) + half;
-            tx = ((uint32_t)ux >> dsh) | ((uint32_t)(ux >> 32) << (32 - dsh));
-            ty = ((uint32_t)uy >> dsh) | ((uint32_t)(uy >> 32) << (32 - dsh));
-            tz = ((uint32_t)uz >> dsh) | ((uint32_t)(uz >> 32) << (32 - dsh));
-        }
-        f->p[0] = (int32_t)(tx - (((uint32_t)o->bc.x - (uint32_t)r->o.x)
-                                  << sf));
-        f->p[1] = (int32_t)(ty - (((uint32_t)o->bc.y - (uint32_t)r->o.y)
-                                  << sf));
-        f->p[2] = (int32_t)(tz - (((uint32_t)o->bc.z - (uint32_t)r->o.z)
-                                  << sf));
+    if (sf >= 0 && (FX_UBITS > 23 || dsh > 0)) { /* sf <= 23 */
+        /* Up to 2^8 in radius: 32-bit shifts of a product's two words and
+         * a difference's low word; on the M0 no library multiply (#17: 28
+         * fewer instructions a frame, 178 on the M0). */
+        f->p[0] = (int32_t)(frame_td(tca, r->d.x, dsh) -
+                            (((uint32_t)o->bc.x - r->o.x) << sf));
+        f->p[1] = (int32_t)(frame_td(tca, r->d.y, dsh) -
+                            (((uint32_t)o->bc.y - r->o.y) << sf));
+        f->p[2] = (int32_t)(frame_td(tca, r->d.z, dsh) -
+                            (((uint32_t)o->bc.z - r->o.z) << sf));
+        /* Base and top, exact from the object's fields (the centre bc.y
+         * is a.y + h/2 rounded down). */
         f->yb = (int32_t)(((uint32_t)o->a.y - (uint32_t)o->bc.y) << sf);
         f->yt = (int32_t)(((uint32_t)o->a.y + (uint32_t)o->h -
                            (uint32_t)o->bc.y) << sf);
@@ -223,11 +196,10 @@ RT_ALWAYS_INLINE static inline void frame_set(upright_frame *f,
                                      -sf);
     }
     /* The direction with RT_FRAME_BITS fraction bits, as shift_round
-     * gives it, in 32 bits (|d| <= 2^FX_UBITS): a 64-bit shift_round
-     * here kept both words of each (#17: 51 fewer instructions a frame
-     * on the M3, 13 on the M0). */
-    const int ush = FX_UBITS - RT_FRAME_BITS;
-    const int rs = ush > 0 ? ush : 0, ls = ush > 0 ? 0 : -ush;
+     * gives it, in 32 bits (#17: 51 fewer instructions a frame, 13 on
+     * the M0). */
+    const int rs = FX_UBITS > RT_FRAME_BITS ? FX_UBITS - RT_FRAME_BITS : 0;
+    const int ls = rs - (FX_UBITS - RT_FRAME_BITS);
     const int32_t dh = (int32_t)(((int64_t)1 << rs) >> 1);
     f->d[0] = ((r->d.x + dh) >> rs) * ((int32_t)1 << ls);
     f->d[1] = ((r->d.y + dh) >> rs) * ((int32_t)1 << ls);
@@ -292,16 +264,15 @@ static int thin_side(const rt_object *o, const rt_ray *r, int64_t tca,
     if (yh > (INT64_MAX >> 31) || yh < -(INT64_MAX >> 31))
         return -1;
     const int64_t w46 = o->k * yh + ((o->k * yl) >> RT_FRAME_BITS);
-    uint64_t m = 0;
-    m |= (uint64_t)(x46 < 0 ? -x46 : x46);
-    m |= (uint64_t)(z46 < 0 ? -z46 : z46);
-    m |= (uint64_t)(w46 < 0 ? -w46 : w46);
+    const uint64_t m = (uint64_t)(x46 < 0 ? -x46 : x46) |
+                       (uint64_t)(z46 < 0 ? -z46 : z46) |
+                       (uint64_t)(w46 < 0 ? -w46 : w46);
     /* A frame value is a 46-bit world value times 2^(sf - FX_UBITS); the
      * fine frame's 2^e more. Not thin after all: the first solve stands. */
     const int64_t fm = shift_round((int64_t)m, FX_UBITS - sf);
     if (fm >= 2 * RT_THIN_SIDE)
         return -1;
-    int e = 23 + FX_UBITS - sf - rt_bitlen64_i(m);
+    int e = 23 + FX_UBITS - sf - (m ? 64 - fx_clz64(m) : 0); /* bits */
     e = e < 0 ? 0 : (e > 24 ? 24 : e);
     const int n = FX_UBITS - sf - e;
     const int32_t qx = (int32_t)shift_round(x46, n);
@@ -492,14 +463,8 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
         if (y < yb - RT_RIM_SLACK ||
             (y > yt + (cone ? 0 : RT_RIM_SLACK) && !steep))
             continue;
-        /* World distance: tca + root 2^(ushift - (F - 16)); for sf > 0
-         * (sf <= 23) a 32-bit shift of |root| <= 2^26 (#17: 5.7 fewer
-         * instructions a pixel on the M0, seed). */
-        const int32_t r32 = (int32_t)root[i];
-        const int64_t dt =
-            f.sf > 0 ? (r32 + ((int32_t)1 << (f.sf - 1))) >> f.sf
-                     : shift_round(root[i], f.sf);
-        if (take(tca + dt, tmin, &best)) {
+        /* World distance: tca + root 2^(ushift - (F - 16)). */
+        if (take(tca + shift_round(root[i], f.sf), tmin, &best)) {
             *part = 0;
             found = 1;
             break;
