@@ -55,7 +55,7 @@ static inline uint32_t frame_td(int64_t t, int32_t b, int n)
 }
 
 /* a b, exact, |a|, |b| <= 2^30: on the M0 with the middle partial products
- * (below 2^30) summed in 32 bits (#17: 50 fewer instructions a hit). */
+ * (below 2^30) summed in 32 bits (#17: hit_upright 50 instructions less). */
 static inline int64_t frame_mul(int32_t a, int32_t b)
 {
     if (!FX_SOFT_MUL64)
