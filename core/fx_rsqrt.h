@@ -12,18 +12,20 @@
 extern const uint16_t fx_rsqrt_tab[192];
 
 /* floor(a b / 2^32), exact. Without a 32x32->64 multiply
- * (FX_SOFT_MUL64), from 16-bit halves: a b = ah bh 2^32 + (m1 + m2)
- * 2^16 + al bl, so the high word is ah bh plus the high halves of m1
- * and m2 plus the carry of their low halves and al bl / 2^16, without
- * the low word a full soft product joins (#17). */
+ * (FX_SOFT_MUL64), from 16-bit halves: a b = ah bh 2^32 + (ah bl + al
+ * bh) 2^16 + al bl, summed by columns (Hacker's Delight, mulhu): t = al
+ * bh + floor(al bl / 2^16) and w = ah bl + (t mod 2^16) are each at most
+ * (2^16 - 1) 2^16, so neither wraps, and the high word is ah bh plus
+ * their high halves, without the low word a full soft product joins
+ * (#17). */
 static inline uint32_t fx_umulhi32(uint32_t a, uint32_t b)
 {
     if (!FX_SOFT_MUL64)
         return (uint32_t)(fx_umul64(a, b) >> 32);
     uint32_t ah = a >> 16, al = a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
-    uint32_t m1 = ah * bl, m2 = al * bh;
-    uint32_t t = ((al * bl) >> 16) + (m1 & 0xFFFFu) + (m2 & 0xFFFFu);
-    return ah * bh + (m1 >> 16) + (m2 >> 16) + (t >> 16);
+    uint32_t t = al * bh + ((al * bl) >> 16);
+    uint32_t w = ah * bl + (t & 0xFFFFu);
+    return ah * bh + (t >> 16) + (w >> 16);
 }
 
 /* floor(x rc / 2^31) for rc <= 2^16, exact, with 32-bit products only:
