@@ -58,15 +58,26 @@ static inline int32_t fx_rsqrt_q29(uint32_t m)
 static inline uint32_t fx_rsqrt_q30(uint32_t m, int32_t r)
 {
     uint32_t ur = (uint32_t)r; /* (2^29, 2^30] */
-    uint32_t uh = ur >> 16, ul = ur & 0xFFFFu, mid = uh * ul; /* < 2^30 */
-    /* < 2^60; soft, ur^2 = uh^2 2^32 + mid 2^17 + ul^2, three products
-     * where fx_umul64 takes four (#17). */
-    uint64_t r2 = FX_SOFT_MUL64 ? fx_pair64(uh * uh, ul * ul) +
-                                      fx_pair64(mid >> 15, mid << 17)
-                                : fx_umul64(ur, ur);
+    uint32_t uh = ur >> 16, ul = ur & 0xFFFFu;
     /* m r^2 / 2^32, low by at most 2: at most 2^58 since r is low. */
-    uint64_t p = fx_umul64(m, (uint32_t)(r2 >> 32)) +
-                 fx_umulhi32(m, (uint32_t)r2);
+    uint64_t p;
+    if (FX_SOFT_MUL64) {
+        /* ur^2 = H 2^32 + L = uh^2 2^32 + mid 2^17 + ul^2 in three
+         * products, then m H (H < 2^28) by columns as fx_umulhi32, in
+         * words: no 64-bit value until the sum (#17: seed 8,443 -> 8,414
+         * instructions a pixel on the M0, with the last step below). */
+        uint32_t mid = uh * ul, lo = mid << 17, l = ul * ul + lo;
+        uint32_t h = uh * uh + (mid >> 15) + (l < lo);
+        uint32_t mh = m >> 16, ml = m & 0xFFFFu, hh = h >> 16;
+        uint32_t hl = h & 0xFFFFu, a = ml * hl, t = ml * hh + (a >> 16);
+        uint32_t w = mh * hl + (t & 0xFFFFu);
+        p = fx_pair64(mh * hh + (t >> 16) + (w >> 16),
+                      (w << 16) | (a & 0xFFFFu)) +
+            fx_umulhi32(m, l);
+    } else {
+        uint64_t r2 = fx_umul64(ur, ur); /* < 2^60 */
+        p = fx_umul64(m, (uint32_t)(r2 >> 32)) + fx_umulhi32(m, (uint32_t)r2);
+    }
     /* e * 2^58 = 2^58 - p, below 2^39: its bits 8..39 are those of -p,
      * as 2^58 only changes bit 58 and up (one constant less, #17). */
     uint32_t e8 = (uint32_t)((0u - p) >> 8);
@@ -74,8 +85,7 @@ static inline uint32_t fx_rsqrt_q30(uint32_t m, int32_t r)
         return 2 * ur + (fx_umulhi32(ur, e8) >> 18);
     /* floor(ur e8 / 2^50) by columns as fx_umulhi32: with ur <= 2^30 and
      * e8 <= 2^31, t = uh el + ul eh + floor(ul el / 2^16) stays below
-     * 2^32 with no carry to keep (#17: with the square above, seed
-     * 8,443 -> 8,426 instructions a pixel on the M0). */
+     * 2^32 with no carry to keep (#17). */
     uint32_t eh = e8 >> 16, el = e8 & 0xFFFFu;
     uint32_t t = uh * el + ul * eh + ((ul * el) >> 16);
     return 2 * ur + ((uh * eh + (t >> 16)) >> 18);
