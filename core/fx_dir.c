@@ -60,7 +60,7 @@ static inline uint64_t len2_soft(int32_t ax, int32_t ay, int32_t az)
 }
 
 /* Unit vector along the 32-bit vector a, from its exact squared length. */
-static fx_dir3 norm32(int32_t ax, int32_t ay, int32_t az)
+fx_dir3 fx_d3_normalize3(int32_t ax, int32_t ay, int32_t az)
 {
     uint64_t len2 = FX_SOFT_MUL64 ? len2_soft(ax, ay, az)
                                   : (uint64_t)(fx_imul64(ax, ax)) +
@@ -115,11 +115,6 @@ static fx_dir3 norm32(int32_t ax, int32_t ay, int32_t az)
                  unit_c((int32_t)((uint32_t)az << (j - 1)), r));
 }
 
-fx_dir3 fx_d3_normalize(fx_vec3 v)
-{
-    return norm32(v.x, v.y, v.z);
-}
-
 /* 1 if |v| <= INT32_MAX: v is an int32 other than INT32_MIN. */
 static inline int fits31(int64_t v)
 {
@@ -145,7 +140,7 @@ static int32_t shrink(int64_t v, int sh)
 fx_dir3 fx_d3_normalize64(int64_t x, int64_t y, int64_t z)
 {
     if (fits31(x) && fits31(y) && fits31(z))
-        return norm32((int32_t)x, (int32_t)y, (int32_t)z);
+        return fx_d3_normalize3((int32_t)x, (int32_t)y, (int32_t)z);
     uint64_t ux = x < 0 ? 0u - (uint64_t)x : (uint64_t)x;
     uint64_t uy = y < 0 ? 0u - (uint64_t)y : (uint64_t)y;
     uint64_t uz = z < 0 ? 0u - (uint64_t)z : (uint64_t)z;
@@ -153,7 +148,7 @@ fx_dir3 fx_d3_normalize64(int64_t x, int64_t y, int64_t z)
     /* Keep 31 bits of the largest component: a shift by k = 33 - its
      * bit length beyond 2^32, so sh = k - 1; k = 1 below 2^32. */
     int sh = top ? 32 - fx_clz32(top) : 0;
-    return norm32(shrink(x, sh), shrink(y, sh), shrink(z, sh));
+    return fx_d3_normalize3(shrink(x, sh), shrink(y, sh), shrink(z, sh));
 }
 
 fx_dir3 fx_d3_cross_unit(fx_vec3 a, fx_vec3 b)

@@ -152,8 +152,17 @@ static inline int32_t fx_d3_unit_err(fx_dir3 d)
  * (a relative change below 2^-31). */
 fx_dir3 fx_d3_normalize64(int64_t x, int64_t y, int64_t z);
 
-/* Unit vector along v (any scale, as fx_d3_normalize64). */
-fx_dir3 fx_d3_normalize(fx_vec3 v);
+/* Unit vector along (x, y, z), 32-bit components (as fx_d3_normalize64). */
+fx_dir3 fx_d3_normalize3(int32_t x, int32_t y, int32_t z);
+
+/* Unit vector along v (any scale, as fx_d3_normalize64). Inline, so that
+ * the call takes the components in registers, with no wrapper and no
+ * copy of the struct on the way (#17: seed 2,815 -> 2,803 instructions a
+ * pixel on the M3, 8,252 -> 8,233 on the M0). */
+static inline fx_dir3 fx_d3_normalize(fx_vec3 v)
+{
+    return fx_d3_normalize3(v.x, v.y, v.z);
+}
 
 /* One component of fx_d3_renorm: c (1 - e / 2), kept within +-1. On the
  * M0, with |e| <= 2^(FX_UBITS - 15) and |c| < 2^31, c e = ch e 2^16 + cl

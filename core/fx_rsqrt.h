@@ -2,7 +2,7 @@
 /*
  * fx_rsqrt: reciprocal square roots of a normalised 32-bit mantissa m in
  * [2^30, 2^32), the step both unit-vector builders share (fx_v3_normalize
- * in fx_vec.c, fx_d3_normalize in fx_dir.c). Internal to the core.
+ * in fx_vec.c, fx_d3_normalize3 in fx_dir.c). Internal to the core.
  */
 #ifndef FX_RSQRT_H
 #define FX_RSQRT_H
