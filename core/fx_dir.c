@@ -3,54 +3,65 @@
 #include "fx_dir.h"
 #include "fx_rsqrt.h"
 
+/* The top half ah of a = ah 2^16 + al for the balanced low half al =
+ * (int16_t)a in [-2^15, 2^15): a >> 16, plus 1 when al < 0, so within
+ * [-2^15, 2^15] with no wrap even near INT32_MAX. */
+static inline int32_t hi_bal(int32_t a)
+{
+    return (a >> 16) - ((int32_t)(int16_t)a >> 31);
+}
+
 /* a_i 2^j R / 2^(62 - FX_UBITS) rounded to nearest (ties up), for b =
  * a_i 2^(j-1) (j >= 1): the same quotient with a constant shift, which
  * is a few instructions where a variable 64-bit one is a dozen (#17). */
 static inline int32_t unit_c(int32_t b, int32_t r)
 {
-    /* Without a 32x32->64 multiply (FX_SOFT_MUL64), from 16-bit halves
-     * b = bh 2^16 + bl, r = rh 2^16 + rl: with K = 45 - FX_UBITS <= 16,
-     * the quotient is bh rh 2^(16-K) + floor((S + U) / 2^K) for S = bh
-     * rl (an int32) and U = bl rh + floor(bl rl / 2^16) + 2^(44-FX_UBITS)
-     * (below 2^32), and floor((S + U) / 2^K) adds the quotients and the
-     * carry of the remainders. A third of the soft product's work. */
+    /* Without a 32x32->64 multiply (FX_SOFT_MUL64), from balanced halves
+     * b = bh 2^16 + bl, r = rh 2^16 + rl (hi_bal): with K = 45 -
+     * FX_UBITS <= 16, the quotient is bh rh 2^(16-K) + floor(S / 2^K)
+     * for S = bh rl + bl rh + floor(bl rl / 2^16) + 2^(44-FX_UBITS).
+     * |bl|, |rl| <= 2^15 and 2^16 |bh| <= |b| + 2^15, so |S| <= (|b| +
+     * r) / 2 + 2^16; as the result is within 1, |b| r <= 2^61 (1 +
+     * 2^-31), and with |b|, r < 2^31 |b| + r stays near 3 2^30: S is
+     * an int32, with no carry to keep (#17: seed 8,353 -> 8,312
+     * instructions a pixel on the M0). */
     if (FX_SOFT_MUL64 && FX_UBITS >= 29) {
         const int k = 45 - FX_UBITS;
         const int up = FX_UBITS >= 29 ? 16 - k : 0; /* never negative */
-        const uint32_t mask = ((uint32_t)1 << k) - 1u;
-        const int32_t bh = b >> 16, rh = r >> 16;
-        const uint32_t bl = (uint32_t)b & 0xFFFFu, rl = (uint32_t)r & 0xFFFFu;
-        const int32_t sv = bh * (int32_t)rl;
-        const uint32_t uv = bl * (uint32_t)rh + ((bl * rl) >> 16) +
-                            ((uint32_t)1 << (44 - FX_UBITS));
-        const uint32_t c = (((uint32_t)sv & mask) + (uv & mask)) >> k;
+        const int32_t bh = hi_bal(b), bl = (int16_t)b;
+        const int32_t rh = hi_bal(r), rl = (int16_t)r;
+        const int32_t sv = bh * rl + bl * rh + ((bl * rl) >> 16) +
+                           ((int32_t)1 << (44 - FX_UBITS));
         return (int32_t)((uint32_t)(bh * rh) * ((uint32_t)1 << up) +
-                         (uint32_t)(sv >> k) + (uv >> k) + c);
+                         (uint32_t)(sv >> k));
     }
     return (int32_t)((fx_imul64(b, r) + ((int64_t)1 << (60 - FX_UBITS))) >>
                      (61 - FX_UBITS));
 }
 
-/* ax^2 + ay^2 + az^2, exact (at most 3 * 2^62), from the 16-bit halves
- * of the magnitudes u = uh 2^16 + ul: u^2 = uh^2 2^32 + uh ul 2^17 +
- * ul^2, each term summed on its own and joined once, where three soft
- * products (FX_SOFT_MUL64) join three times (#17). uh^2 <= 2^30, uh ul
- * < 2^31 and ul^2 < 2^32. */
+/* ax^2 + ay^2 + az^2, exact (at most 3 * 2^62), from balanced 16-bit
+ * halves a = ah 2^16 + al (hi_bal): a^2 = ah^2 2^32 + ah al 2^17 + al^2.
+ * ah^2 and al^2 are at most 2^30, so their columns of three sum in a
+ * word each; ah al is within [-2^30, 2^30), so two of them sum in an
+ * int32 and the third joins on its own. No absolute values (#17: seed
+ * 8,414 -> 8,353 instructions a pixel on the M0). */
 static inline uint64_t len2_soft(int32_t ax, int32_t ay, int32_t az)
 {
-    const uint32_t ux = ax < 0 ? 0u - (uint32_t)ax : (uint32_t)ax;
-    const uint32_t uy = ay < 0 ? 0u - (uint32_t)ay : (uint32_t)ay;
-    const uint32_t uz = az < 0 ? 0u - (uint32_t)az : (uint32_t)az;
-    const uint32_t xh = ux >> 16, xl = ux & 0xFFFFu, yh = uy >> 16;
-    const uint32_t yl = uy & 0xFFFFu, zh = uz >> 16, zl = uz & 0xFFFFu;
-    const uint32_t hh = xh * xh + yh * yh + zh * zh; /* <= 3 * 2^30 */
-    const uint64_t mid = (uint64_t)(xh * xl) + yh * yl + zh * zl;
-    const uint64_t ll = (uint64_t)(xl * xl) + yl * yl + zl * zl;
-    return ((uint64_t)hh << 32) + (mid << 17) + ll;
+    const int32_t xh = hi_bal(ax), xl = (int16_t)ax, yh = hi_bal(ay);
+    const int32_t yl = (int16_t)ay, zh = hi_bal(az), zl = (int16_t)az;
+    const uint32_t hh = (uint32_t)(xh * xh) + (uint32_t)(yh * yh) +
+                        (uint32_t)(zh * zh); /* <= 3 * 2^30 */
+    const uint32_t ll = (uint32_t)(xl * xl) + (uint32_t)(yl * yl) +
+                        (uint32_t)(zl * zl); /* <= 3 * 2^30 */
+    const int32_t mxy = xh * xl + yh * yl, mz = zh * zl;
+    /* m 2^17 = (m >> 15) 2^32 + (m mod 2^15) 2^17; the sum is the exact
+     * (non-negative) value, so the top word wraps back. */
+    return fx_pair64(hh + (uint32_t)(mxy >> 15) + (uint32_t)(mz >> 15), ll) +
+           ((uint32_t)mxy << 17) + ((uint32_t)mz << 17);
 }
 
 /* Unit vector along the 32-bit vector a, from its exact squared length. */
-static fx_dir3 norm32(int32_t ax, int32_t ay, int32_t az)
+fx_dir3 fx_d3_normalize3(int32_t ax, int32_t ay, int32_t az)
 {
     uint64_t len2 = FX_SOFT_MUL64 ? len2_soft(ax, ay, az)
                                   : (uint64_t)(fx_imul64(ax, ax)) +
@@ -90,20 +101,19 @@ static fx_dir3 norm32(int32_t ax, int32_t ay, int32_t az)
     /* a_i 2^j / sqrt(X) = a_i R 2^j / 2^62. With j >= 1, a_i 2^(j-1)
      * fits int32, as |a_i| 2^j <= sqrt(X) < 2^32. */
     if (j == 0) {
+        /* Plain products: a library call on the M0, but |a|^2 >= 2^62 is
+         * rare, and soft ones would share the halves of a with len2_soft
+         * and keep them across the steps above, spilling on the common
+         * path (#17: seed 8,289 -> 8,252 instructions a pixel on the M0). */
         const int s = 62 - FX_UBITS;
         const int64_t half = (int64_t)1 << (s - 1);
-        return fx_d3((int32_t)((fx_imul64(ax, r) + half) >> s),
-                     (int32_t)((fx_imul64(ay, r) + half) >> s),
-                     (int32_t)((fx_imul64(az, r) + half) >> s));
+        return fx_d3((int32_t)(((int64_t)ax * r + half) >> s),
+                     (int32_t)(((int64_t)ay * r + half) >> s),
+                     (int32_t)(((int64_t)az * r + half) >> s));
     }
     return fx_d3(unit_c((int32_t)((uint32_t)ax << (j - 1)), r),
                  unit_c((int32_t)((uint32_t)ay << (j - 1)), r),
                  unit_c((int32_t)((uint32_t)az << (j - 1)), r));
-}
-
-fx_dir3 fx_d3_normalize(fx_vec3 v)
-{
-    return norm32(v.x, v.y, v.z);
 }
 
 /* 1 if |v| <= INT32_MAX: v is an int32 other than INT32_MIN. */
@@ -131,7 +141,7 @@ static int32_t shrink(int64_t v, int sh)
 fx_dir3 fx_d3_normalize64(int64_t x, int64_t y, int64_t z)
 {
     if (fits31(x) && fits31(y) && fits31(z))
-        return norm32((int32_t)x, (int32_t)y, (int32_t)z);
+        return fx_d3_normalize3((int32_t)x, (int32_t)y, (int32_t)z);
     uint64_t ux = x < 0 ? 0u - (uint64_t)x : (uint64_t)x;
     uint64_t uy = y < 0 ? 0u - (uint64_t)y : (uint64_t)y;
     uint64_t uz = z < 0 ? 0u - (uint64_t)z : (uint64_t)z;
@@ -139,7 +149,7 @@ fx_dir3 fx_d3_normalize64(int64_t x, int64_t y, int64_t z)
     /* Keep 31 bits of the largest component: a shift by k = 33 - its
      * bit length beyond 2^32, so sh = k - 1; k = 1 below 2^32. */
     int sh = top ? 32 - fx_clz32(top) : 0;
-    return norm32(shrink(x, sh), shrink(y, sh), shrink(z, sh));
+    return fx_d3_normalize3(shrink(x, sh), shrink(y, sh), shrink(z, sh));
 }
 
 fx_dir3 fx_d3_cross_unit(fx_vec3 a, fx_vec3 b)

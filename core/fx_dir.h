@@ -152,21 +152,36 @@ static inline int32_t fx_d3_unit_err(fx_dir3 d)
  * (a relative change below 2^-31). */
 fx_dir3 fx_d3_normalize64(int64_t x, int64_t y, int64_t z);
 
-/* Unit vector along v (any scale, as fx_d3_normalize64). */
-fx_dir3 fx_d3_normalize(fx_vec3 v);
+/* Unit vector along (x, y, z), 32-bit components (as fx_d3_normalize64). */
+fx_dir3 fx_d3_normalize3(int32_t x, int32_t y, int32_t z);
+
+/* Unit vector along v (any scale, as fx_d3_normalize64). Inline, so that
+ * the call takes the components in registers, with no wrapper and no
+ * copy of the struct on the way (#17: seed 2,815 -> 2,803 instructions a
+ * pixel on the M3, 8,252 -> 8,233 on the M0). */
+static inline fx_dir3 fx_d3_normalize(fx_vec3 v)
+{
+    return fx_d3_normalize3(v.x, v.y, v.z);
+}
 
 /* One component of fx_d3_renorm: c (1 - e / 2), kept within +-1. On the
  * M0, with |e| <= 2^(FX_UBITS - 15) and |c| < 2^31, c e = ch e 2^16 + cl
  * e in two 32-bit products (cl e within +-2^(FX_UBITS + 1)); the rounding
- * term is a multiple of 2^16, so the shift splits exactly (#17). */
+ * term is a multiple of 2^16, so the shift splits exactly (#17).
+ * Elsewhere the top word of c e 2^(32 - FX_UBITS) (|e 2^(32 - FX_UBITS)|
+ * <= 2^17) is h = floor(c e / 2^FX_UBITS), and the rounded quotient is
+ * floor((h + 1) / 2): one multiply and no 64-bit add or shift (#17: seed
+ * 2,803 -> 2,775 instructions a pixel on the M3). */
 static inline int32_t fx_renorm_c(int32_t c, int32_t e)
 {
     int32_t p;
-    if (FX_SOFT_MUL64)
+    if (FX_SOFT_MUL64) {
         p = ((c >> 16) * e + (((int32_t)((uint32_t)c & 0xFFFFu) * e) >> 16) +
              (FX_UONE >> 16)) >> (FX_UBITS - 15);
-    else
-        p = (int32_t)((fx_imul64(c, e) + FX_UONE) >> (FX_UBITS + 1));
+    } else {
+        const int32_t e2 = e * ((int32_t)1 << (32 - FX_UBITS));
+        p = ((int32_t)(fx_imul64(c, e2) >> 32) + 1) >> 1;
+    }
     int32_t v = c - p;
     return v > FX_UONE ? FX_UONE : (v < -FX_UONE ? -FX_UONE : v);
 }

@@ -2,7 +2,7 @@
 /*
  * fx_rsqrt: reciprocal square roots of a normalised 32-bit mantissa m in
  * [2^30, 2^32), the step both unit-vector builders share (fx_v3_normalize
- * in fx_vec.c, fx_d3_normalize in fx_dir.c). Internal to the core.
+ * in fx_vec.c, fx_d3_normalize3 in fx_dir.c). Internal to the core.
  */
 #ifndef FX_RSQRT_H
 #define FX_RSQRT_H
@@ -12,18 +12,20 @@
 extern const uint16_t fx_rsqrt_tab[192];
 
 /* floor(a b / 2^32), exact. Without a 32x32->64 multiply
- * (FX_SOFT_MUL64), from 16-bit halves: a b = ah bh 2^32 + (m1 + m2)
- * 2^16 + al bl, so the high word is ah bh plus the high halves of m1
- * and m2 plus the carry of their low halves and al bl / 2^16, without
- * the low word a full soft product joins (#17). */
+ * (FX_SOFT_MUL64), from 16-bit halves: a b = ah bh 2^32 + (ah bl + al
+ * bh) 2^16 + al bl, summed by columns (Hacker's Delight, mulhu): t = al
+ * bh + floor(al bl / 2^16) and w = ah bl + (t mod 2^16) are each at most
+ * (2^16 - 1) 2^16, so neither wraps, and the high word is ah bh plus
+ * their high halves, without the low word a full soft product joins
+ * (#17: seed 8,502 -> 8,443 instructions a pixel on the M0). */
 static inline uint32_t fx_umulhi32(uint32_t a, uint32_t b)
 {
     if (!FX_SOFT_MUL64)
         return (uint32_t)(fx_umul64(a, b) >> 32);
     uint32_t ah = a >> 16, al = a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
-    uint32_t m1 = ah * bl, m2 = al * bh;
-    uint32_t t = ((al * bl) >> 16) + (m1 & 0xFFFFu) + (m2 & 0xFFFFu);
-    return ah * bh + (m1 >> 16) + (m2 >> 16) + (t >> 16);
+    uint32_t t = al * bh + ((al * bl) >> 16);
+    uint32_t w = ah * bl + (t & 0xFFFFu);
+    return ah * bh + (t >> 16) + (w >> 16);
 }
 
 /* floor(x rc / 2^31) for rc <= 2^16, exact, with 32-bit products only:
@@ -56,14 +58,37 @@ static inline int32_t fx_rsqrt_q29(uint32_t m)
 static inline uint32_t fx_rsqrt_q30(uint32_t m, int32_t r)
 {
     uint32_t ur = (uint32_t)r; /* (2^29, 2^30] */
-    uint64_t r2 = fx_umul64(ur, ur); /* < 2^60 */
+    uint32_t uh = ur >> 16, ul = ur & 0xFFFFu;
     /* m r^2 / 2^32, low by at most 2: at most 2^58 since r is low. */
-    uint64_t p = fx_umul64(m, (uint32_t)(r2 >> 32)) +
-                 fx_umulhi32(m, (uint32_t)r2);
+    uint64_t p;
+    if (FX_SOFT_MUL64) {
+        /* ur^2 = H 2^32 + L = uh^2 2^32 + mid 2^17 + ul^2 in three
+         * products, then m H (H < 2^28) by columns as fx_umulhi32, in
+         * words: no 64-bit value until the sum (#17: seed 8,443 -> 8,414
+         * instructions a pixel on the M0, with the last step below). */
+        uint32_t mid = uh * ul, lo = mid << 17, l = ul * ul + lo;
+        uint32_t h = uh * uh + (mid >> 15) + (l < lo);
+        uint32_t mh = m >> 16, ml = m & 0xFFFFu, hh = h >> 16;
+        uint32_t hl = h & 0xFFFFu, a = ml * hl, t = ml * hh + (a >> 16);
+        uint32_t w = mh * hl + (t & 0xFFFFu);
+        p = fx_pair64(mh * hh + (t >> 16) + (w >> 16),
+                      (w << 16) | (a & 0xFFFFu)) +
+            fx_umulhi32(m, l);
+    } else {
+        uint64_t r2 = fx_umul64(ur, ur); /* < 2^60 */
+        p = fx_umul64(m, (uint32_t)(r2 >> 32)) + fx_umulhi32(m, (uint32_t)r2);
+    }
     /* e * 2^58 = 2^58 - p, below 2^39: its bits 8..39 are those of -p,
      * as 2^58 only changes bit 58 and up (one constant less, #17). */
     uint32_t e8 = (uint32_t)((0u - p) >> 8);
-    return 2 * ur + (fx_umulhi32(ur, e8) >> 18);
+    if (!FX_SOFT_MUL64)
+        return 2 * ur + (fx_umulhi32(ur, e8) >> 18);
+    /* floor(ur e8 / 2^50) by columns as fx_umulhi32: with ur <= 2^30 and
+     * e8 <= 2^31, t = uh el + ul eh + floor(ul el / 2^16) stays below
+     * 2^32 with no carry to keep (#17). */
+    uint32_t eh = e8 >> 16, el = e8 & 0xFFFFu;
+    uint32_t t = uh * el + ul * eh + ((ul * el) >> 16);
+    return 2 * ur + ((uh * eh + (t >> 16)) >> 18);
 }
 
 #endif /* FX_RSQRT_H */
