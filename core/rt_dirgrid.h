@@ -96,10 +96,11 @@ static inline unsigned rt_dir_from_object(const rt_dir_grids *gs,
 }
 
 /* The grid of the reflections off object i, a plane, of rays from o, if
- * o is the eye; else RT_DIR_NONE. Such a ray runs on the line from the eye's mirror image in
- * the plane through its hit: seen from that image it is a ray from a
- * point, culled as tightly as a shadow ray. A floor's own grid, centred
- * on a ball that holds the whole scene, culls nothing. */
+ * o is the eye; else RT_DIR_NONE. Such a ray runs on the line from the
+ * eye's mirror image in the plane through its hit: seen from that image
+ * it is a ray from a point, culled as tightly as a shadow ray. A floor's
+ * own grid, centred on a ball that holds the whole scene, culls
+ * nothing. */
 static inline unsigned rt_dir_mirror_of(const rt_dir_grids *gs, unsigned i,
                                         fx_vec3 o)
 {
