@@ -3,21 +3,13 @@
 #include "fx_dir.h"
 #include "fx_rsqrt.h"
 
-/* The top half ah of a = ah 2^16 + al for the balanced low half al =
- * (int16_t)a in [-2^15, 2^15): a >> 16, plus 1 when al < 0, so within
- * [-2^15, 2^15] with no wrap even near INT32_MAX. */
-static inline int32_t hi_bal(int32_t a)
-{
-    return (a >> 16) - ((int32_t)(int16_t)a >> 31);
-}
-
 /* a_i 2^j R / 2^(62 - FX_UBITS) rounded to nearest (ties up), for b =
  * a_i 2^(j-1) (j >= 1): the same quotient with a constant shift, which
  * is a few instructions where a variable 64-bit one is a dozen (#17). */
 static inline int32_t unit_c(int32_t b, int32_t r)
 {
     /* Without a 32x32->64 multiply (FX_SOFT_MUL64), from balanced halves
-     * b = bh 2^16 + bl, r = rh 2^16 + rl (hi_bal): with K = 45 -
+     * b = bh 2^16 + bl, r = rh 2^16 + rl (fx_hi_bal): with K = 45 -
      * FX_UBITS <= 16, the quotient is bh rh 2^(16-K) + floor(S / 2^K)
      * for S = bh rl + bl rh + floor(bl rl / 2^16) + 2^(44-FX_UBITS).
      * |bl|, |rl| <= 2^15 and 2^16 |bh| <= |b| + 2^15, so |S| <= (|b| +
@@ -28,8 +20,8 @@ static inline int32_t unit_c(int32_t b, int32_t r)
     if (FX_SOFT_MUL64 && FX_UBITS >= 29) {
         const int k = 45 - FX_UBITS;
         const int up = FX_UBITS >= 29 ? 16 - k : 0; /* never negative */
-        const int32_t bh = hi_bal(b), bl = (int16_t)b;
-        const int32_t rh = hi_bal(r), rl = (int16_t)r;
+        const int32_t bh = fx_hi_bal(b), bl = (int16_t)b;
+        const int32_t rh = fx_hi_bal(r), rl = (int16_t)r;
         const int32_t sv = bh * rl + bl * rh + ((bl * rl) >> 16) +
                            ((int32_t)1 << (44 - FX_UBITS));
         return (int32_t)((uint32_t)(bh * rh) * ((uint32_t)1 << up) +
@@ -39,34 +31,10 @@ static inline int32_t unit_c(int32_t b, int32_t r)
                      (61 - FX_UBITS));
 }
 
-/* ax^2 + ay^2 + az^2, exact (at most 3 * 2^62), from balanced 16-bit
- * halves a = ah 2^16 + al (hi_bal): a^2 = ah^2 2^32 + ah al 2^17 + al^2.
- * ah^2 and al^2 are at most 2^30, so their columns of three sum in a
- * word each; ah al is within [-2^30, 2^30), so two of them sum in an
- * int32 and the third joins on its own. No absolute values (#17: seed
- * 8,414 -> 8,353 instructions a pixel on the M0). */
-static inline uint64_t len2_soft(int32_t ax, int32_t ay, int32_t az)
-{
-    const int32_t xh = hi_bal(ax), xl = (int16_t)ax, yh = hi_bal(ay);
-    const int32_t yl = (int16_t)ay, zh = hi_bal(az), zl = (int16_t)az;
-    const uint32_t hh = (uint32_t)(xh * xh) + (uint32_t)(yh * yh) +
-                        (uint32_t)(zh * zh); /* <= 3 * 2^30 */
-    const uint32_t ll = (uint32_t)(xl * xl) + (uint32_t)(yl * yl) +
-                        (uint32_t)(zl * zl); /* <= 3 * 2^30 */
-    const int32_t mxy = xh * xl + yh * yl, mz = zh * zl;
-    /* m 2^17 = (m >> 15) 2^32 + (m mod 2^15) 2^17; the sum is the exact
-     * (non-negative) value, so the top word wraps back. */
-    return fx_pair64(hh + (uint32_t)(mxy >> 15) + (uint32_t)(mz >> 15), ll) +
-           ((uint32_t)mxy << 17) + ((uint32_t)mz << 17);
-}
-
 /* Unit vector along the 32-bit vector a, from its exact squared length. */
 fx_dir3 fx_d3_normalize3(int32_t ax, int32_t ay, int32_t az)
 {
-    uint64_t len2 = FX_SOFT_MUL64 ? len2_soft(ax, ay, az)
-                                  : (uint64_t)(fx_imul64(ax, ax)) +
-                                        (uint64_t)(fx_imul64(ay, ay)) +
-                                        (uint64_t)(fx_imul64(az, az));
+    uint64_t len2 = fx_len2_raw(ax, ay, az);
     uint32_t hi = (uint32_t)(len2 >> 32), lo = (uint32_t)len2, m;
     int j, z;
     /* Along an axis the answer is exact: +-1 there, as box and quad
@@ -102,7 +70,7 @@ fx_dir3 fx_d3_normalize3(int32_t ax, int32_t ay, int32_t az)
      * fits int32, as |a_i| 2^j <= sqrt(X) < 2^32. */
     if (j == 0) {
         /* Plain products: a library call on the M0, but |a|^2 >= 2^62 is
-         * rare, and soft ones would share the halves of a with len2_soft
+         * rare, and soft ones would share the halves of a with fx_len2_raw
          * and keep them across the steps above, spilling on the common
          * path (#17: seed 8,289 -> 8,252 instructions a pixel on the M0). */
         const int s = 62 - FX_UBITS;

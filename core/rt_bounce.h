@@ -32,48 +32,14 @@ static inline int32_t rt_dotu_of(int64_t dn)
     return (int32_t)((dn + ((int64_t)1 << (FX_UBITS - 1))) >> FX_UBITS);
 }
 
-/* fx_renorm_c(c, e), the same value, for |e| <= 2^15: where the core
- * has no 64-bit multiply (FX_SOFT_MUL64, the M0) by rt_mulsh_soft. */
-static inline int32_t rt_renorm_c(int32_t c, int32_t e)
-{
-    if (!FX_SOFT_MUL64)
-        return fx_renorm_c(c, e);
-    const int32_t v = c - rt_mulsh_soft(c, e, FX_UBITS + 1);
-    return v > FX_UONE ? FX_UONE : (v < -FX_UONE ? -FX_UONE : v);
-}
-
-/* fx_d3_renorm(u), the same value: its test e = |u|^2 - 1 within
- * +-2^-15 as one unsigned 64-bit compare of the exact sum, and e itself
- * a 32-bit factor (GCC, seeing e's range, made each product a 64x64
- * one: three multiplies instead of one on the Cortex-M3). */
-static inline fx_dir3 rt_renorm(fx_dir3 u)
-{
-    /* t >> FX_UBITS is fx_d3_renorm's e. |u|^2 on the M0 from three
-     * squares, each three 32-bit products (#17: fewer than a dot
-     * product's twelve). */
-    const int64_t uu =
-        FX_SOFT_MUL64 ? (int64_t)(rt_square_soft(u.x) + rt_square_soft(u.y) +
-                                  rt_square_soft(u.z))
-                      : rt_dot_raw(u, u);
-    const int64_t t = uu - ((int64_t)1 << (2 * FX_UBITS)) +
-                      ((int64_t)1 << (FX_UBITS - 1));
-    /* |e| <= 2^15 (in 2^-FX_UBITS): -2^(2U-15) <= t < 2^(2U-15) + 2^U. */
-    const uint64_t lo = (uint64_t)1 << (2 * FX_UBITS - 15);
-    if ((uint64_t)t + lo >= 2 * lo + ((uint64_t)1 << FX_UBITS))
-        return fx_d3_normalize(fx_d3_raw(u));
-    const int32_t e = (int32_t)(uint32_t)((uint64_t)t >> FX_UBITS);
-    return fx_d3(rt_renorm_c(u.x, e), rt_renorm_c(u.y, e),
-                 rt_renorm_c(u.z, e));
-}
-
 /* Mirror direction d - 2 (d.n) n of unit d about unit n, given the exact
  * dn = fx_d3_dot_raw(d, n): formed from the rounded d.n, then only
- * renormalised (rt_renorm), since the reflection of a unit vector is
+ * renormalised (fx_d3_renorm), since the reflection of a unit vector is
  * one. */
 static inline fx_dir3 rt_reflect_dir_dn(fx_dir3 d, fx_dir3 n, int64_t dn)
 {
     const int32_t nk = -rt_dotu_of(dn); /* |k| <= 2^FX_UBITS */
-    return rt_renorm(fx_d3(rt_mirror_c(d.x, nk, n.x),
+    return fx_d3_renorm(fx_d3(rt_mirror_c(d.x, nk, n.x),
                            rt_mirror_c(d.y, nk, n.y),
                            rt_mirror_c(d.z, nk, n.z)));
 }

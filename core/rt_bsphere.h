@@ -47,32 +47,6 @@ RT_NOINLINE static int bsphere_fine(const fx_vec3 *c, int64_t t,
     return 1;
 }
 
-/* x0 y0 + x1 y1 + x2 y2, exact, for |xi| < 2^30 and |yi| <= 2^30 (a
- * small offset and a unit vector). Where 64-bit products are built from
- * 16-bit ones (the M0), the three terms' partial products are summed
- * first and joined once: the high ones in 32 bits (each below 2^28),
- * each term's two middle ones in 32 bits (each below 2^30). */
-static inline int64_t dot_small(int32_t x0, int32_t y0, int32_t x1,
-                                int32_t y1, int32_t x2, int32_t y2)
-{
-    if (!FX_SOFT_MUL64)
-        return fx_imul64(x0, y0) + fx_imul64(x1, y1) + fx_imul64(x2, y2);
-    const int32_t xh0 = x0 >> 16, yh0 = y0 >> 16;
-    const int32_t xh1 = x1 >> 16, yh1 = y1 >> 16;
-    const int32_t xh2 = x2 >> 16, yh2 = y2 >> 16;
-    const uint32_t xl0 = (uint32_t)x0 & 0xFFFFu, yl0 = (uint32_t)y0 & 0xFFFFu;
-    const uint32_t xl1 = (uint32_t)x1 & 0xFFFFu, yl1 = (uint32_t)y1 & 0xFFFFu;
-    const uint32_t xl2 = (uint32_t)x2 & 0xFFFFu, yl2 = (uint32_t)y2 & 0xFFFFu;
-    const int32_t hh = xh0 * yh0 + xh1 * yh1 + xh2 * yh2;
-    const int64_t mid = (int64_t)(xh0 * (int32_t)yl0 + (int32_t)xl0 * yh0) +
-                        (int64_t)(xh1 * (int32_t)yl1 + (int32_t)xl1 * yh1) +
-                        (int64_t)(xh2 * (int32_t)yl2 + (int32_t)xl2 * yh2);
-    const uint64_t ll = (uint64_t)(xl0 * yl0) + (xl1 * yl1) +
-                        (uint64_t)(xl2 * yl2);
-    return (int64_t)(((uint64_t)(int64_t)hh << 32) + ((uint64_t)mid << 16) +
-                     ll);
-}
-
 /* t d 2^-FX_UBITS rounded to nearest (ties up), for |t| < 7 2^28 and
  * |d| <= 2^FX_UBITS (a closest approach and a unit component). Where
  * 64-bit products are built from 16-bit ones (the M0), the rounding is
@@ -98,30 +72,6 @@ static inline int32_t mul_round_u(int32_t t, int32_t d)
                (int32_t)lo;
     }
     return (int32_t)((fx_imul64(t, d) + UHALF) >> FX_UBITS);
-}
-
-/* x^2 + y^2 + z^2, exact, for |x|, |y|, |z| <= 2^29 (bsphere's h).
- * Where 64-bit products are built from 16-bit ones (the M0), from halves
- * with signed low parts, x = h 2^16 + l with |h| <= 2^13 and -2^15 <= l
- * < 2^15: the three terms' h^2 (below 2^28 summed), h l (below 2^30) and
- * l^2 (below 2^32, unsigned) are summed first and joined once, as x^2 =
- * h^2 2^32 + h l 2^17 + l^2 (#17: 17 instructions a pixel on the M0,
- * as against three soft products). */
-static inline uint64_t len2_small(int32_t x, int32_t y, int32_t z)
-{
-    if (!FX_SOFT_MUL64)
-        return (uint64_t)fx_imul64(x, x) + (uint64_t)fx_imul64(y, y) +
-               (uint64_t)fx_imul64(z, z);
-    const int32_t xh = (x + 32768) >> 16, yh = (y + 32768) >> 16;
-    const int32_t zh = (z + 32768) >> 16;
-    const int32_t xl = x - xh * 65536, yl = y - yh * 65536;
-    const int32_t zl = z - zh * 65536;
-    const uint32_t hh = (uint32_t)(xh * xh + yh * yh + zh * zh);
-    const int32_t m = xh * xl + yh * yl + zh * zl;
-    const uint32_t ll = (uint32_t)(xl * xl) + (uint32_t)(yl * yl) +
-                        (uint32_t)(zl * zl);
-    return fx_pair64(hh, 0) +
-           fx_pair64((uint32_t)(m >> 15), (uint32_t)m << 17) + ll;
 }
 
 /* t e 2^-32 rounded (ties up), for bsphere's closest approach in units
@@ -159,7 +109,7 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         /* The common case, in 32-bit operands (smull/smlal on a Cortex-M3):
          * the same values as the general path below. */
         int32_t ox = c.x - ray->o.x, oy = c.y - ray->o.y, oz = c.z - ray->o.z;
-        int64_t q = dot_small(ox, ray->d.x, oy, ray->d.y, oz, ray->d.z);
+        int64_t q = rt_dot3_small(ox, oy, oz, ray->d.x, ray->d.y, ray->d.z);
         /* |t| <= |oc| < sqrt(3) 2^30, so t fits; t +- r may not. */
         int32_t t32 = (int32_t)((q + UHALF) >> FX_UBITS);
         /* Nothing for an exact unit d (e = 0; #17: 5 instructions a
@@ -200,8 +150,8 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         h[1] = hy;
         h[2] = hz;
         /* 32-bit squares: one multiply each on a Cortex-M3, three
-         * 16-bit ones inline on an M0 (len2_small). */
-        h2 = len2_small(hx, hy, hz);
+         * 16-bit ones inline on an M0 (fx_len2_raw). */
+        h2 = fx_len2_raw(hx, hy, hz);
         t = t32;
     } else {
         int64_t ox = (int64_t)c.x - ray->o.x;

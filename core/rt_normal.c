@@ -299,41 +299,6 @@ static inline int32_t unit_c(int32_t v, uint32_t rinv, int sh)
                      ((uint32_t)(u >> 32) << (32 - sh)));
 }
 
-/* c^2, exact: on the M0 from three 16-bit partial products, the middle
- * one doubled by its shift (fx_imul64_soft takes four; #17: 15 fewer
- * instructions a sphere's normal on the M0). */
-static inline int64_t square_c(int32_t c)
-{
-    if (!FX_SOFT_MUL64)
-        return fx_imul64(c, c);
-    const int32_t h = c >> 16;
-    const uint32_t l = (uint32_t)c & 0xFFFFu;
-    const int32_t m = h * (int32_t)l;
-    return (int64_t)(fx_pair64((uint32_t)(h * h), l * l) +
-                     fx_pair64((uint32_t)(m >> 15), (uint32_t)m << 17));
-}
-
-/* fx_d3_renorm(u), the same bits, with e = |u|^2 - 1 taken from the two
- * words of the sum of squares as a 32-bit value: from the 64-bit one the
- * compiler formed each c e as a 64-bit product (#17: 6 fewer
- * instructions a sphere's normal on the M3, 7 on the M0). */
-static inline fx_dir3 renorm_unit(fx_dir3 u)
-{
-    const uint64_t s = (uint64_t)square_c(u.x) + (uint64_t)square_c(u.y) +
-                       (uint64_t)square_c(u.z) -
-                       ((uint64_t)1 << (2 * FX_UBITS)) +
-                       ((uint64_t)1 << (FX_UBITS - 1));
-    /* |e| <= 2^(FX_UBITS - 15): s + 2^(2 FX_UBITS - 15) below
-     * 2^(2 FX_UBITS - 14) + 2^FX_UBITS. */
-    const uint64_t lim = (uint64_t)1 << (2 * FX_UBITS - 15);
-    if (s + lim >= 2 * lim + ((uint64_t)1 << FX_UBITS))
-        return fx_d3_normalize(fx_d3_raw(u));
-    const int32_t e = (int32_t)(((uint32_t)s >> FX_UBITS) |
-                                ((uint32_t)(s >> 32) << (32 - FX_UBITS)));
-    return fx_d3(fx_renorm_c(u.x, e), fx_renorm_c(u.y, e),
-                 fx_renorm_c(u.z, e));
-}
-
 fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *pp,
                   uint16_t part, int precise)
 {
@@ -345,7 +310,7 @@ fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *pp,
          * full when that is more than 2^-15). */
         const int sh = 33 - fx_clz32((uint32_t)o->r); /* b + 1 */
         const fx_vec3 v = fx_v3_sub(p, o->a);
-        return renorm_unit(fx_d3(unit_c(v.x, o->rinv, sh),
+        return fx_d3_renorm(fx_d3(unit_c(v.x, o->rinv, sh),
                                   unit_c(v.y, o->rinv, sh),
                                   unit_c(v.z, o->rinv, sh)));
     }

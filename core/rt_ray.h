@@ -32,29 +32,6 @@ typedef struct {
  * (oc.d) / |d|^2, not oc.d: without the factor its error is e |oc|; with
  * t (1 - e) it is e^2 |oc|. The bounding-sphere test applies it. */
 
-/* c^2 exact for |c| < 2^31, from |c| = h 2^16 + l: h^2 2^32 + h l 2^17
- * + l^2, three 32-bit products (h < 2^15, l < 2^16). */
-static inline uint64_t rt_square_soft(int32_t c)
-{
-    const uint32_t a = c < 0 ? 0u - (uint32_t)c : (uint32_t)c;
-    const uint32_t h = a >> 16, l = a & 0xFFFFu;
-    return ((uint64_t)(h * h) << 32) + ((uint64_t)(h * l) << 17) + l * l;
-}
-
-/* fx_d3_unit_err(d). Where the core has no 64-bit multiply
- * (FX_SOFT_MUL64, the M0) its three squares are each a call from the
- * shading loop's file (FX_MUL64_CALL): here they take three 32-bit
- * products inline, the same exact sum (below 2^62). */
-static inline int32_t rt_unit_err(fx_dir3 d)
-{
-    if (!FX_SOFT_MUL64)
-        return fx_d3_unit_err(d);
-    const uint64_t s =
-        rt_square_soft(d.x) + rt_square_soft(d.y) + rt_square_soft(d.z);
-    return (int32_t)(((int64_t)s - ((int64_t)1 << (2 * FX_UBITS))) >>
-                     (2 * FX_UBITS - 32));
-}
-
 /* x0 y0 + x1 y1 + x2 y2 exact for any int32 values whose sum fits
  * int64: from 16-bit halves (x = h 2^16 + l, 0 <= l < 2^16), the high,
  * middle and low partial products summed apart (each a 32-bit product:
@@ -107,7 +84,7 @@ static inline int32_t rt_mulsh_soft(int32_t a, int32_t c, unsigned s)
                      (uint32_t)(low >> k));
 }
 
-/* One term of rt_dot3_unit_soft: x y split at 16 bits with signed low
+/* One term of rt_dot3_small: x y split at 16 bits with signed low
  * halves, x = xh 2^16 + xl with -2^15 <= xl < 2^15, added to the running
  * sums of the high, the two middle and the low partial products. */
 #define RT_DOT_STEP(xv, yv)                                                  \
@@ -120,17 +97,18 @@ static inline int32_t rt_mulsh_soft(int32_t a, int32_t c, unsigned s)
         ll += xl_ * yl_;                                                     \
     } while (0)
 
-/* x0 y0 + x1 y1 + x2 y2 exact for unit-vector components (each within
- * 2^30 + 2^16), as rt_dot3_soft, in fewer instructions: with signed low
- * halves |xh| <= 2^14 + 1 and |xl| <= 2^15, so the three high products
- * and each set of three middle ones sum below 2^31 in 32 bits (3 (2^14 +
- * 1) 2^15 < 2^31), and only the low ones (up to 2^30 each) need 64 bits.
- * For the M0 (#17: 125 -> 94 instructions a call; the seed 2.2 % fewer
- * with rt_renorm's squares). */
-RT_NOINLINE static int64_t rt_dot3_unit_soft(int32_t x0, int32_t x1,
-                                             int32_t x2, int32_t y0,
-                                             int32_t y1, int32_t y2)
+/* x0 y0 + x1 y1 + x2 y2 exact for components within 2^30 + 2^16 (unit
+ * vectors, and offsets below 2^30 against them). Where 64-bit products
+ * are built from 16-bit ones (the M0), from signed low halves: |xh| <=
+ * 2^14 + 1 and |xl| <= 2^15, so the three high products and each set of
+ * three middle ones sum below 2^31 in 32 bits (3 (2^14 + 1) 2^15 <
+ * 2^31), and only the low ones (up to 2^30 each) need 64 bits (#17: 125
+ * -> 94 instructions a call on the M0). */
+static inline int64_t rt_dot3_small(int32_t x0, int32_t x1, int32_t x2,
+                                    int32_t y0, int32_t y1, int32_t y2)
 {
+    if (!FX_SOFT_MUL64)
+        return fx_imul64(x0, y0) + fx_imul64(x1, y1) + fx_imul64(x2, y2);
     int32_t hh = 0, m1 = 0, m2 = 0;
     int64_t ll = 0;
     RT_DOT_STEP(x0, y0);
@@ -142,6 +120,15 @@ RT_NOINLINE static int64_t rt_dot3_unit_soft(int32_t x0, int32_t x1,
                      (uint64_t)ll);
 }
 #undef RT_DOT_STEP
+
+/* rt_dot3_small out of line, for the shading loop on the M0: inline it
+ * grew the frame every bounce level pays. */
+RT_NOINLINE static int64_t rt_dot3_unit_soft(int32_t x0, int32_t x1,
+                                             int32_t x2, int32_t y0,
+                                             int32_t y1, int32_t y2)
+{
+    return rt_dot3_small(x0, x1, x2, y0, y1, y2);
+}
 
 /* fx_d3_dot_raw(a, b), the same exact value (rt_dot3_unit_soft on the
  * M0). */
@@ -166,7 +153,7 @@ static inline void rt_ray_set(rt_ray *r, fx_vec3 o, fx_dir3 d)
 {
     r->o = o;
     r->d = d;
-    r->e = rt_unit_err(d);
+    r->e = fx_d3_unit_err(d);
     r->small = (uint8_t)fx_v3_small(o);
 }
 

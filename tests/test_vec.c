@@ -5,8 +5,9 @@
  * vectors, and on at least 1,000,000 seeded pseudo-random vectors per
  * operation. Dot, cross and the squared length are exact or rounded once;
  * length is correctly rounded; normalize is within 1 ulp per component.
- * The M0's exact dot products and squares from 16-bit halves (rt_ray.h)
- * equal the 64-bit ones.
+ * The M0's exact dot products from 16-bit halves (rt_ray.h) equal the
+ * 64-bit ones, and so does fx_len2_raw (here its 64-bit form; the M0's
+ * halves are checked by the firmware images, tests/suite_firmware.sh).
  */
 #include <math.h>
 #include <stdint.h>
@@ -458,10 +459,18 @@ static void test_soft_dots(void)
                             (uint64_t)((int64_t)c[2] * d[2]);
         bad_any += (uint64_t)rt_dot3_soft(c[0], c[1], c[2], d[0], d[1],
                                           d[2]) != cd;
-        const int32_t e = (int32_t)rnd32() >> (rnd64() % 32);
-        bad_sq += rt_square_soft(e == INT32_MIN ? INT32_MAX : e) !=
-                  (uint64_t)((int64_t)(e == INT32_MIN ? INT32_MAX : e) *
-                             (e == INT32_MIN ? INT32_MAX : e));
+        /* Any int32 values, INT32_MIN included: at most 3 2^62. */
+        int32_t e[3];
+        for (int k = 0; k < 3; k++)
+            e[k] = k == 0 && i % 97 == 0 ? INT32_MIN
+                                          : (int32_t)rnd32() >> (rnd64() % 32);
+        uint64_t sq = 0;
+        for (int k = 0; k < 3; k++)
+            sq += (uint64_t)((int64_t)e[k] * e[k]);
+        bad_sq += fx_len2_raw(e[0], e[1], e[2]) != sq;
+        bad_sq += fx_len2_raw(a[0], a[1], a[2]) !=
+                  (uint64_t)((int64_t)a[0] * a[0] + (int64_t)a[1] * a[1] +
+                             (int64_t)a[2] * a[2]);
     }
     CHECK_EQ(bad_unit, 0);
     CHECK_EQ(bad_any, 0);
