@@ -36,22 +36,16 @@ static int64_t shift_round(int64_t v, int n)
     return (v + ((int64_t)1 << (n - 1))) >> n;
 }
 
-/* The low 32 bits of (t b + 2^(n - 1)) 2^-n, 0 < n < 32. On the M0, for
- * n > 16 and a 32-bit t, from t b's 16-bit columns in 32 bits: with s = n
- * - 16, hi 2^(16 - s) + (next 16 + 2^(s - 1)) 2^-s (no carry below). */
+/* The low 32 bits of (t b + 2^(n - 1)) 2^-n, 0 < n < 32, for a unit
+ * component b. On the M0, for n > 16 and a 32-bit t, from 16-bit
+ * products in 32 bits (rt_mulsh_soft). */
 static inline uint32_t frame_td(int64_t t, int32_t b, int n)
 {
     if (!FX_SOFT_MUL64 || t != (int32_t)t || n <= 16) {
         const uint64_t u = (uint64_t)(t * b) + ((uint32_t)1 << (n - 1));
         return ((uint32_t)u >> n) | ((uint32_t)(u >> 32) << (32 - n));
     }
-    const int32_t ah = (int32_t)t >> 16, bh = b >> 16, s = n - 16;
-    const uint32_t al = (uint32_t)t & 0xFFFFu, bl = (uint32_t)b & 0xFFFFu;
-    const int32_t m = ah * (int32_t)bl + (int32_t)((al * bl) >> 16);
-    const int32_t u = (int32_t)al * bh + (m & 0xFFFF);
-    const uint32_t w = ((uint32_t)u & 0xFFFFu) + (1u << (s - 1));
-    return ((uint32_t)(ah * bh + (m >> 16) + (u >> 16)) << (16 - s)) +
-           (w >> s);
+    return (uint32_t)rt_mulsh_soft((int32_t)t, b, (unsigned)n);
 }
 
 /* a b, exact, |a|, |b| <= 2^30: on the M0 with the middle partial products
