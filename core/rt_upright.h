@@ -160,17 +160,18 @@ typedef struct {
     int32_t yb, yt; /* the base's and the top's (apex's) height */
 } upright_frame;
 
-/* frame_set's p, yb and yt for an object beyond 2^8 in radius (or a
- * build with few unit bits), in 64-bit values; with shift_round_cold
- * where cold. */
+/* frame_set's p, yb and yt (frame_set's f->sf is sf) for an object
+ * beyond 2^8 in radius (or a build with few unit bits), in 64-bit values;
+ * with shift_round_cold where cold. */
 RT_ALWAYS_INLINE static inline void frame_set_wide(upright_frame *f,
                                                    const rt_object *o,
                                                    const rt_ray *r,
-                                                   int64_t tca, int cold)
+                                                   int64_t tca, int sf,
+                                                   int cold)
 {
     int64_t (*const sr)(int64_t, int) =
         cold ? shift_round_cold : shift_round;
-    const int sf = f->sf, dsh = FX_UBITS - sf;
+    const int dsh = FX_UBITS - sf;
     f->p[0] = (int32_t)(sr(tca * r->d.x, dsh) -
                         sr((int64_t)o->bc.x - r->o.x, -sf));
     f->p[1] = (int32_t)(sr(tca * r->d.y, dsh) -
@@ -183,9 +184,9 @@ RT_ALWAYS_INLINE static inline void frame_set_wide(upright_frame *f,
 
 /* frame_set_wide out of line. */
 RT_COLD static void frame_set_wide_call(upright_frame *f, const rt_object *o,
-                                        const rt_ray *r, int64_t tca)
+                                        const rt_ray *r, int64_t tca, int sf)
 {
-    frame_set_wide(f, o, r, tca, 1);
+    frame_set_wide(f, o, r, tca, sf, 1);
 }
 
 /* Sets *f for object o and ray r, whose bounding-sphere tca is given. */
@@ -215,15 +216,14 @@ RT_ALWAYS_INLINE static inline void frame_set(upright_frame *f,
         f->yt = (int32_t)(((uint32_t)o->a.y + (uint32_t)o->h -
                            (uint32_t)o->bc.y) << sf);
     } else if (FX_SOFT_MUL64) {
-        frame_set_wide(f, o, r, tca, 0);
+        frame_set_wide(f, o, r, tca, sf, 0);
     } else {
         /* Rare: out of line on the an385, whose flash is short (#17: 164
          * bytes less); into w, not f itself, which may then stay in
          * registers. Inline on the M0 (26 instructions a pixel fewer on
          * the mirrors scene). */
         upright_frame w;
-        w.sf = sf;
-        frame_set_wide_call(&w, o, r, tca);
+        frame_set_wide_call(&w, o, r, tca, sf);
         for (int i = 0; i < 3; i++)
             f->p[i] = w.p[i];
         f->yb = w.yb;
