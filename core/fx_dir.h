@@ -235,8 +235,16 @@ static inline int32_t fx_renorm_c(int32_t c, int32_t e)
         const int32_t e2 = e * ((int32_t)1 << (32 - FX_UBITS));
         p = ((int32_t)(fx_imul64(c, e2) >> 32) + 1) >> 1;
     }
-    int32_t v = c - p;
-    return v > FX_UONE ? FX_UONE : (v < -FX_UONE ? -FX_UONE : v);
+    /* Within +-1 in one test: v ^ sg is |v| - 1 for v < 0 and v
+     * otherwise, below FX_UONE unless |v| > FX_UONE or v = FX_UONE, and
+     * then the result is +-FX_UONE with the sign of v (#17: seed 2,640.5
+     * -> 2,638.3 instructions a pixel on the M3, 7,299.3 -> 7,290.1 on
+     * the M0). */
+    const int32_t v = c - p;
+    const int32_t sg = v >> 31;
+    if ((uint32_t)(v ^ sg) < (uint32_t)FX_UONE)
+        return v;
+    return (FX_UONE ^ sg) - sg;
 }
 
 /* Unit vector along u, a vector already within 2^-15 of unit length (a
