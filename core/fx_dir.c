@@ -34,21 +34,25 @@ static inline int32_t unit_c(int32_t b, int32_t r)
 /* Unit vector along the 32-bit vector a, from its exact squared length. */
 fx_dir3 fx_d3_normalize3(int32_t ax, int32_t ay, int32_t az)
 {
-    uint64_t len2 = fx_len2_raw(ax, ay, az);
-    uint32_t hi = (uint32_t)(len2 >> 32), lo = (uint32_t)len2, m;
+    uint32_t m;
     int j, z;
     /* Along an axis the answer is exact: +-1 there, as box and quad
      * normals and the planes they are tested against rely on. Both
      * that and the zero vector have a zero component, which most
-     * vectors have not: one test of each on the way. */
+     * vectors have not: one test of each on the way, before the squared
+     * length, while the components are still in the argument registers
+     * (#17: seed 2,645.7 -> 2,640.5 instructions a pixel on the M3,
+     * 7,344.6 -> 7,329.8 on the M0). */
     if (ax == 0 || ay == 0 || az == 0) {
-        if (len2 == 0)
+        if ((ax | ay | az) == 0)
             return fx_d3(0, 0, 0);
         if ((ax == 0) + (ay == 0) + (az == 0) == 2)
             return fx_d3(ax > 0 ? FX_UONE : (ax < 0 ? -FX_UONE : 0),
                          ay > 0 ? FX_UONE : (ay < 0 ? -FX_UONE : 0),
                          az > 0 ? FX_UONE : (az < 0 ? -FX_UONE : 0));
     }
+    const uint64_t len2 = fx_len2_raw(ax, ay, az);
+    const uint32_t hi = (uint32_t)(len2 >> 32), lo = (uint32_t)len2;
     /* Scale |a|^2 by 4^j into X in [2^62, 2^64) and keep its top word m,
      * in [2^30, 2^32). Then a_i / |a| = a_i 2^j / sqrt(X). Word by word,
      * as a 64-bit variable shift costs more on 32-bit cores. */
@@ -100,7 +104,7 @@ static int32_t shrink(int64_t v, int sh)
 {
     uint32_t lo = (uint32_t)v, hi = (uint32_t)((uint64_t)v >> 32);
     uint32_t tl = sh ? ((lo >> 1) >> (sh - 1)) | (hi << (32 - sh)) : lo;
-    uint32_t u = (tl >> 1) + (tl & 1u);
+    uint32_t u = tl - (tl >> 1); /* floor((tl + 1) / 2), no wrap */
     if (hi >> 31)
         return (int32_t)(u - 0x80000000u); /* in [-2^31, 0] */
     return u > (uint32_t)INT32_MAX ? INT32_MAX : (int32_t)u;

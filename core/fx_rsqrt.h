@@ -59,28 +59,36 @@ static inline uint32_t fx_rsqrt_q30(uint32_t m, int32_t r)
 {
     uint32_t ur = (uint32_t)r; /* (2^29, 2^30] */
     uint32_t uh = ur >> 16, ul = ur & 0xFFFFu;
-    /* m r^2 / 2^32, low by at most 2: at most 2^58 since r is low. */
-    uint64_t p;
+    /* p = floor(m r^2 / 2^32), at most 2^58 since r is low. e * 2^58 =
+     * 2^58 - p, below 2^39: its bits 8..39, e8, are those of -p, as 2^58
+     * only changes bit 58 and up (one constant less, #17). */
+    uint32_t e8;
     if (FX_SOFT_MUL64) {
-        /* ur^2 = H 2^32 + L = uh^2 2^32 + mid 2^17 + ul^2 in three
-         * products, then m H (H < 2^28) by columns as fx_umulhi32, in
-         * words: no 64-bit value until the sum (#17: seed 8,443 -> 8,414
-         * instructions a pixel on the M0, with the last step below). */
-        uint32_t mid = uh * ul, lo = mid << 17, l = ul * ul + lo;
-        uint32_t h = uh * uh + (mid >> 15) + (l < lo);
-        uint32_t mh = m >> 16, ml = m & 0xFFFFu, hh = h >> 16;
-        uint32_t hl = h & 0xFFFFu, a = ml * hl, t = ml * hh + (a >> 16);
-        uint32_t w = mh * hl + (t & 0xFFFFu);
-        p = fx_pair64(mh * hh + (t >> 16) + (w >> 16),
-                      (w << 16) | (a & 0xFFFFu)) +
-            fx_umulhi32(m, l);
+        /* ur^2 = H 2^32 + L by columns, in three products: w = 2 uh ul
+         * + floor(ul^2 / 2^16) < 2^31 + 2^16, H = uh^2 + floor(w / 2^16),
+         * and L's halves are w and ul^2 mod 2^16, which u = floor(m L /
+         * 2^32) takes as fx_umulhi32 does. p = m H + u, and e8 = -ceil(p
+         * / 2^8) mod 2^32. With H = H1 2^8 + H0, floor(m H / 2^8) = m H1
+         * + (m >> 8) H0 + floor(c / 2^8) for c = (m mod 2^8) H0 < 2^16,
+         * each term within 32 bits mod 2^32, and m H mod 2^8 = c mod 2^8:
+         * three products where m H in full takes four, and no 64-bit
+         * value (#17: seed 7,393 -> 7,345 instructions a pixel on the
+         * M0). */
+        uint32_t sq = ul * ul, w = 2 * (uh * ul) + (sq >> 16);
+        uint32_t h = uh * uh + (w >> 16), lh = w & 0xFFFFu;
+        uint32_t ml = m & 0xFFFFu, ll = sq & 0xFFFFu, mh = m >> 16;
+        uint32_t t = ml * lh + ((ml * ll) >> 16);
+        uint32_t t2 = mh * ll + (t & 0xFFFFu);
+        uint32_t u = mh * lh + (t >> 16) + (t2 >> 16), h0 = h & 0xFFu;
+        uint32_t c = (m & 0xFFu) * h0;
+        e8 = 0u - (m * (h >> 8) + (m >> 8) * h0 + (c >> 8) + (u >> 8) +
+                   (((c & 0xFFu) + (u & 0xFFu) + 0xFFu) >> 8));
     } else {
         uint64_t r2 = fx_umul64(ur, ur); /* < 2^60 */
-        p = fx_umul64(m, (uint32_t)(r2 >> 32)) + fx_umulhi32(m, (uint32_t)r2);
+        uint64_t p = fx_umul64(m, (uint32_t)(r2 >> 32)) +
+                     fx_umulhi32(m, (uint32_t)r2);
+        e8 = (uint32_t)((0u - p) >> 8);
     }
-    /* e * 2^58 = 2^58 - p, below 2^39: its bits 8..39 are those of -p,
-     * as 2^58 only changes bit 58 and up (one constant less, #17). */
-    uint32_t e8 = (uint32_t)((0u - p) >> 8);
     if (!FX_SOFT_MUL64)
         return 2 * ur + (fx_umulhi32(ur, e8) >> 18);
     /* floor(ur e8 / 2^50) by columns as fx_umulhi32: with ur <= 2^30 and
