@@ -104,7 +104,7 @@ static int32_t shrink(int64_t v, int sh)
 {
     uint32_t lo = (uint32_t)v, hi = (uint32_t)((uint64_t)v >> 32);
     uint32_t tl = sh ? ((lo >> 1) >> (sh - 1)) | (hi << (32 - sh)) : lo;
-    uint32_t u = tl - (tl >> 1); /* floor((tl + 1) / 2), no wrap */
+    uint32_t u = (tl >> 1) + (tl & 1u);
     if (hi >> 31)
         return (int32_t)(u - 0x80000000u); /* in [-2^31, 0] */
     return u > (uint32_t)INT32_MAX ? INT32_MAX : (int32_t)u;
