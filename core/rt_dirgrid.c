@@ -260,6 +260,7 @@ void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s)
 {
     unsigned used = 0, next = 0;
     gs->words = (s->n_objects + 31u) / 32u;
+    gs->near = 0;
     for (unsigned i = 0; i < RT_MAX_LIGHTS; i++)
         gs->light[i] = RT_DIR_NONE;
     for (unsigned i = 0; i < RT_MAX_OBJECTS; i++)
@@ -286,13 +287,24 @@ void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s)
             mirror_eye(o, s->cam.eye, &c, &radius))
             gs->mirror[i] = add_grid(gs, &used, &next, s, c, radius, 0, i);
     }
+    /* And whether rt_passes_by may take the M0's 16-bit path: offset by
+     * 2^22, each of bc's components and br is below 2^23 if their OR
+     * is. */
+    uint32_t span = 0;
     for (unsigned i = 0; RT_HAS_SECONDARY && i < s->n_objects; i++) {
         const rt_object *o = &s->obj[i];
         const rt_material *m = &s->mat[o->material];
+        const uint32_t lim = (uint32_t)1 << 22;
+        if (FX_SOFT_MUL64)
+            span |= ((uint32_t)o->bc.x + lim) | ((uint32_t)o->bc.y + lim) |
+                    ((uint32_t)o->bc.z + lim) | (uint32_t)o->br |
+                    (o->small ? 0u : ~0u);
         if (m->reflect > 0 || m->transparency > 0)
             gs->from[i] =
                 add_grid(gs, &used, &next, s, o->bc, o->br, 1, RT_NO_OBJECT);
     }
+    if (FX_SOFT_MUL64)
+        gs->near = RT_HAS_SECONDARY && span < (uint32_t)1 << 23;
 }
 
 #endif

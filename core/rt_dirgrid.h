@@ -33,6 +33,8 @@ typedef struct {
     uint8_t light[RT_MAX_LIGHTS];   /* shadow rays to light i: grid */
     uint8_t from[RT_MAX_OBJECTS];   /* rays leaving object i: grid */
     uint8_t mirror[RT_MAX_OBJECTS]; /* eye rays mirrored off plane i */
+    uint8_t near; /* every object small, bc and br within 2^22: the M0's
+                     rt_passes_by path (rt_miss_cross_near) */
     fx_vec3 eye;                    /* the eye those grids are for */
     rt_dir_grid grid[RT_DIR_MAX_GRIDS];
     uint32_t pool[RT_DIR_POOL_WORDS];
@@ -137,12 +139,14 @@ static inline int rt_dir_to_light(const rt_dir_grids *gs, unsigned li,
 
 typedef struct {
     unsigned words;
+    uint8_t near;
 } rt_dir_grids;
 
 static inline void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s)
 {
     (void)s;
     gs->words = 0;
+    gs->near = 0;
 }
 
 static inline unsigned rt_dir_from_object(const rt_dir_grids *gs,
