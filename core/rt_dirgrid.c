@@ -86,16 +86,21 @@ static void cone_of(cone_box *b, const rt_object *o, fx_vec3 lp, fx_t slack)
     b->upper = (int64_t)a.y + chord >= 0;
 }
 
+/* rt_dir_index's 24-bit scale needs RT_DIR_GRID 2^24 below 2^31. */
+#if RT_DIR_GRID > 127
+#error "RT_DIR_GRID must be at most 127"
+#endif
+
 /* The same map rt_dir_cell uses, so marking is conservative. */
 static unsigned cell_of(fx_t v, fx_t v0, fx_t s)
 {
-    int64_t i = ((int64_t)(v - v0) * s) >> 32;
+    int64_t i = ((int64_t)(v - v0) * s) >> RT_DIR_SBITS;
     return i < 0 ? 0 : (i >= N ? N - 1 : (unsigned)i);
 }
 
 static fx_t cells_per_unit(fx_t lo, fx_t hi)
 {
-    return (fx_t)(((int64_t)N << 32) / ((int64_t)hi - lo));
+    return (fx_t)(((int64_t)N << RT_DIR_SBITS) / ((int64_t)hi - lo));
 }
 
 void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
@@ -148,9 +153,9 @@ void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
                 z1 = b.hi_z > z1 ? b.hi_z : z1;
             }
         }
-    if (n == 0) { /* nothing to hit: an empty range */
-        g->x0 = g->z0 = FX_ONE;
-        g->x1 = g->z1 = -FX_ONE;
+    if (n == 0) { /* nothing to hit: a range no unit vector reaches */
+        g->x0 = g->z0 = 2 * FX_ONE;
+        g->wx = g->wz = 0;
         g->sx = g->sz = 0;
         return;
     }
@@ -159,9 +164,9 @@ void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
     if (z1 - z0 < MIN_SPAN)
         z1 = z0 + MIN_SPAN;
     g->x0 = x0;
-    g->x1 = x1;
+    g->wx = (uint32_t)(x1 - x0);
     g->z0 = z0;
-    g->z1 = z1;
+    g->wz = (uint32_t)(z1 - z0);
     g->sx = cells_per_unit(x0, x1);
     g->sz = cells_per_unit(z0, z1);
 
