@@ -86,16 +86,21 @@ static void cone_of(cone_box *b, const rt_object *o, fx_vec3 lp, fx_t slack)
     b->upper = (int64_t)a.y + chord >= 0;
 }
 
+/* rt_dir_index's 24-bit scale needs RT_DIR_GRID 2^24 below 2^31. */
+#if RT_DIR_GRID > 127
+#error "RT_DIR_GRID must be at most 127"
+#endif
+
 /* The same map rt_dir_cell uses, so marking is conservative. */
 static unsigned cell_of(fx_t v, fx_t v0, fx_t s)
 {
-    int64_t i = ((int64_t)(v - v0) * s) >> 32;
+    int64_t i = ((int64_t)(v - v0) * s) >> RT_DIR_SBITS;
     return i < 0 ? 0 : (i >= N ? N - 1 : (unsigned)i);
 }
 
 static fx_t cells_per_unit(fx_t lo, fx_t hi)
 {
-    return (fx_t)(((int64_t)N << 32) / ((int64_t)hi - lo));
+    return (fx_t)(((int64_t)N << RT_DIR_SBITS) / ((int64_t)hi - lo));
 }
 
 void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
@@ -148,9 +153,9 @@ void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
                 z1 = b.hi_z > z1 ? b.hi_z : z1;
             }
         }
-    if (n == 0) { /* nothing to hit: an empty range */
-        g->x0 = g->z0 = FX_ONE;
-        g->x1 = g->z1 = -FX_ONE;
+    if (n == 0) { /* nothing to hit: a range no unit vector reaches */
+        g->x0 = g->z0 = 2 * FX_ONE;
+        g->wx = g->wz = 0;
         g->sx = g->sz = 0;
         return;
     }
@@ -159,9 +164,9 @@ void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
     if (z1 - z0 < MIN_SPAN)
         z1 = z0 + MIN_SPAN;
     g->x0 = x0;
-    g->x1 = x1;
+    g->wx = (uint32_t)(x1 - x0);
     g->z0 = z0;
-    g->z1 = z1;
+    g->wz = (uint32_t)(z1 - z0);
     g->sx = cells_per_unit(x0, x1);
     g->sz = cells_per_unit(z0, z1);
 
@@ -260,6 +265,7 @@ void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s)
 {
     unsigned used = 0, next = 0;
     gs->words = (s->n_objects + 31u) / 32u;
+    gs->near = 0;
     for (unsigned i = 0; i < RT_MAX_LIGHTS; i++)
         gs->light[i] = RT_DIR_NONE;
     for (unsigned i = 0; i < RT_MAX_OBJECTS; i++)
@@ -286,13 +292,24 @@ void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s)
             mirror_eye(o, s->cam.eye, &c, &radius))
             gs->mirror[i] = add_grid(gs, &used, &next, s, c, radius, 0, i);
     }
+    /* And whether rt_passes_by may take the M0's 16-bit path: offset by
+     * 2^22, each of bc's components and br is below 2^23 if their OR
+     * is. */
+    uint32_t span = 0;
     for (unsigned i = 0; RT_HAS_SECONDARY && i < s->n_objects; i++) {
         const rt_object *o = &s->obj[i];
         const rt_material *m = &s->mat[o->material];
+        const uint32_t lim = (uint32_t)1 << 22;
+        if (FX_SOFT_MUL64)
+            span |= ((uint32_t)o->bc.x + lim) | ((uint32_t)o->bc.y + lim) |
+                    ((uint32_t)o->bc.z + lim) | (uint32_t)o->br |
+                    (o->small ? 0u : ~0u);
         if (m->reflect > 0 || m->transparency > 0)
             gs->from[i] =
                 add_grid(gs, &used, &next, s, o->bc, o->br, 1, RT_NO_OBJECT);
     }
+    if (FX_SOFT_MUL64)
+        gs->near = RT_HAS_SECONDARY && span < (uint32_t)1 << 23;
 }
 
 #endif

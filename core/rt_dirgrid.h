@@ -19,8 +19,10 @@
  * listed for every direction outside it. */
 typedef struct {
     fx_t x0, z0;             /* lower corner of the gridded (u.x, u.z) */
-    fx_t x1, z1;             /* upper corner */
-    fx_t sx, sz;             /* cells per unit of u.x and u.z (Q16.16) */
+    uint32_t wx, wz;         /* its sides: the upper corner is x0 + wx,
+                                z0 + wz */
+    fx_t sx, sz;             /* cells per unit of u.x and u.z, times
+                                2^RT_DIR_SBITS / 2^16 */
     const uint32_t *cell;    /* 2 RT_DIR_GRID^2 bit sets, hemisphere first */
     const uint32_t *outside; /* out, or NULL when nothing can be hit
                                 outside the corners */
@@ -33,6 +35,8 @@ typedef struct {
     uint8_t light[RT_MAX_LIGHTS];   /* shadow rays to light i: grid */
     uint8_t from[RT_MAX_OBJECTS];   /* rays leaving object i: grid */
     uint8_t mirror[RT_MAX_OBJECTS]; /* eye rays mirrored off plane i */
+    uint8_t near; /* every object small, bc and br within 2^22: the M0's
+                     rt_passes_by path (rt_miss_cross_near) */
     fx_vec3 eye;                    /* the eye those grids are for */
     rt_dir_grid grid[RT_DIR_MAX_GRIDS];
     uint32_t pool[RT_DIR_POOL_WORDS];
@@ -54,17 +58,20 @@ void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
                          const rt_scene *s, fx_vec3 centre, fx_t radius,
                          int every_way, unsigned skip);
 
-/* floor(d s / 2^32) for 0 <= d <= 2^17, 0 <= s < 2^31 and d s <= 2^35:
- * a cell index. On the M0, from s's 16-bit halves and d's: floor(d s /
- * 2^16) = d sh + dh sl + floor(dl sl / 2^16), below 2^19, each product
- * below 2^32 (#17: no 64-bit library multiply). */
+/* Fraction bits of the grids' scales: 24 where 64-bit products are
+ * built from 16-bit ones (the M0), so that a cell index takes one 32-bit
+ * product, not three (#17: 43 instructions a pixel on the M0's seed). */
+#define RT_DIR_SBITS (FX_SOFT_MUL64 ? 24 : 32)
+
+/* floor(d s / 2^RT_DIR_SBITS), a cell index, for 0 <= d <= span with
+ * scale s = floor(RT_DIR_GRID 2^RT_DIR_SBITS / span) and span >= 2^8,
+ * 2^17 at most: s is below 2^31, d s at most RT_DIR_GRID
+ * 2^RT_DIR_SBITS, below 2^32 for 24 bits. */
 static inline uint32_t rt_dir_index(fx_t d, fx_t s)
 {
     if (!FX_SOFT_MUL64)
         return (uint32_t)(((int64_t)d * s) >> 32);
-    uint32_t ud = (uint32_t)d, sl = (uint32_t)s & 0xFFFFu;
-    uint32_t t = (ud >> 16) * sl + (((ud & 0xFFFFu) * sl) >> 16);
-    return (ud * ((uint32_t)s >> 16) + t) >> 16;
+    return ((uint32_t)d * (uint32_t)s) >> 24;
 }
 
 /* The bit set of objects a ray with unit direction u from g's ball may
@@ -72,13 +79,16 @@ static inline uint32_t rt_dir_index(fx_t d, fx_t s)
 static inline const uint32_t *rt_dir_cell(const rt_dir_grid *g, fx_t ux,
                                           fx_t uy, fx_t uz, unsigned words)
 {
-    if (ux < g->x0 || ux > g->x1 || uz < g->z0 || uz > g->z1)
+    /* Within the corners: 0 <= u - x0 <= wx, one unsigned compare (u
+     * and x0 within 2^17: no overflow; #17: 12 instructions a pixel on
+     * the seed, either core). */
+    const uint32_t dx = (uint32_t)(ux - g->x0), dz = (uint32_t)(uz - g->z0);
+    if (dx > g->wx || dz > g->wz)
         return g->outside;
-    /* u - x0 is at most x1 - x0 <= 2^17 and sx = RT_DIR_GRID 2^32 / (x1
-     * - x0): the cell is the high word of the product, at most
-     * RT_DIR_GRID. */
-    uint32_t ix = rt_dir_index(ux - g->x0, g->sx);
-    uint32_t iz = rt_dir_index(uz - g->z0, g->sz);
+    /* sx = RT_DIR_GRID 2^RT_DIR_SBITS / wx, rounded down: the cell is at
+     * most RT_DIR_GRID. */
+    uint32_t ix = rt_dir_index((fx_t)dx, g->sx);
+    uint32_t iz = rt_dir_index((fx_t)dz, g->sz);
     if (ix >= RT_DIR_GRID)
         ix = RT_DIR_GRID - 1;
     if (iz >= RT_DIR_GRID)
@@ -137,12 +147,14 @@ static inline int rt_dir_to_light(const rt_dir_grids *gs, unsigned li,
 
 typedef struct {
     unsigned words;
+    uint8_t near;
 } rt_dir_grids;
 
 static inline void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s)
 {
     (void)s;
     gs->words = 0;
+    gs->near = 0;
 }
 
 static inline unsigned rt_dir_from_object(const rt_dir_grids *gs,

@@ -20,13 +20,13 @@
  * sphere, so its line never passes it by. */
 static inline void rt_try_nearest(rt_work *wk, const rt_object *objs,
                                   const rt_ray *r, unsigned i,
-                                  unsigned from, fx_t *best,
+                                  unsigned from, int near, fx_t *best,
                                   uint16_t *obj, uint16_t *part)
 {
     fx_t ti;
     uint16_t pi;
     RT_COUNT(wk, tests);
-    if ((i == from || !rt_passes_by(&objs[i], r)) &&
+    if ((i == from || !rt_passes_by(&objs[i], r, near)) &&
         rt_intersect(&objs[i], r, RT_EPS, *best, &ti, &pi)) {
         *best = ti;
         *obj = (uint16_t)i;
@@ -44,24 +44,32 @@ static inline int rt_nearest(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
 {
     const rt_scene *s = tr->scene;
     fx_t best = FX_MAX;
+    /* The ray's origin within 2^22, as every object (rt_passes_by). */
+    const uint32_t lim = (uint32_t)1 << 22;
+    const int near = FX_SOFT_MUL64 && tr->grids.near &&
+                     (uint32_t)r->o.x + lim < 2 * lim &&
+                     (uint32_t)r->o.y + lim < 2 * lim &&
+                     (uint32_t)r->o.z + lim < 2 * lim;
     /* A closed convex object skips itself exactly for rays leaving its
      * outside, so this ray runs inside `from`. */
     if (skip == RT_NO_OBJECT && from < s->n_objects &&
         rt_sealed_alone(&tr->sealed, from)) {
-        rt_try_nearest(wk, s->obj, r, from, from, &best, obj, part);
+        rt_try_nearest(wk, s->obj, r, from, from, near, &best, obj, part);
     } else if (grid != RT_DIR_NONE) {
         const uint32_t *cand = rt_dir_candidates(&tr->grids, grid, r->d);
         for (unsigned w = 0; cand && w < tr->grids.words; w++) {
             for (uint32_t m = cand[w]; m; m &= m - 1) {
                 unsigned i = w * 32 + (unsigned)fx_ctz32(m);
                 if (i != skip)
-                    rt_try_nearest(wk, s->obj, r, i, from, &best, obj, part);
+                    rt_try_nearest(wk, s->obj, r, i, from, near, &best, obj,
+                                   part);
             }
         }
     } else {
         for (unsigned i = 0; i < s->n_objects; i++)
             if (i != skip)
-                rt_try_nearest(wk, s->obj, r, i, from, &best, obj, part);
+                rt_try_nearest(wk, s->obj, r, i, from, near, &best, obj,
+                               part);
     }
     *t = best;
     return best != FX_MAX;
