@@ -141,8 +141,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
         fx_dir3 ld = fx_d3_normalize(lv);
         /* n.ld as fx_d3_dot rounds it; the highlight takes it exact. */
         const int64_t nl = rt_dot_raw(*np, ld);
-        fx_t ndl = (fx_t)((nl + ((int64_t)1 << (2 * FX_UBITS - 17))) >>
-                          (2 * FX_UBITS - 16));
+        fx_t ndl = rt_cos_fx(nl);
         if (ndl <= 0)
             continue;
         if (RT_HAS_SHADOWS && (tr->feat & RT_FEAT_SHADOWS) &&
@@ -188,7 +187,8 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
             if (!rt_refract_dn(r->d, *np, d_dot_n(r->d, *np, dnn), eta, &td)) {
                 /* total internal reflection */
                 rt_ray_set(&tr2, p_out,
-                           rt_reflect_dir_dn(r->d, *np, d_dot_n(r->d, *np, dnn)));
+                           rt_reflect_dir_dn(r->d, *np,
+                                             d_dot_n(r->d, *np, dnn)));
                 RT_COUNT(wk, reflection);
                 rt_rgb_madd(&c,
                             trace(tr, wk, &tr2, depth + 1, wt, skip_out, oi,
