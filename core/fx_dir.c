@@ -131,3 +131,8 @@ fx_dir3 fx_d3_cross_unit(fx_vec3 a, fx_vec3 b)
                              fx_imul64(a.z, b.x) - fx_imul64(a.x, b.z),
                              fx_imul64(a.x, b.y) - fx_imul64(a.y, b.x));
 }
+
+fx_dir3 fx_d3_clamp(int32_t x, int32_t y, int32_t z)
+{
+    return fx_d3(fx_unit_clamp(x), fx_unit_clamp(y), fx_unit_clamp(z));
+}

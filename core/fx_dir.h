@@ -217,34 +217,46 @@ static inline fx_dir3 fx_d3_normalize(fx_vec3 v)
     return fx_d3_normalize3(v.x, v.y, v.z);
 }
 
-/* One component of fx_d3_renorm: c (1 - e / 2), kept within +-1. On the
- * M0, with |e| <= 2^(FX_UBITS - 15) and |c| < 2^31, c e = ch e 2^16 + cl
- * e in two 32-bit products (cl e within +-2^(FX_UBITS + 1)); the rounding
- * term is a multiple of 2^16, so the shift splits exactly (#17).
- * Elsewhere the top word of c e 2^(32 - FX_UBITS) (|e 2^(32 - FX_UBITS)|
- * <= 2^17) is h = floor(c e / 2^FX_UBITS), and the rounded quotient is
- * floor((h + 1) / 2): one multiply and no 64-bit add or shift (#17: seed
- * 2,803 -> 2,775 instructions a pixel on the M3). */
-static inline int32_t fx_renorm_c(int32_t c, int32_t e)
+/* c e / 2, rounded, for one component of fx_d3_renorm: c (1 - e / 2)
+ * is c less this. On the M0, with |e| <= 2^(FX_UBITS - 15) and |c| <
+ * 2^31, c e = ch e 2^16 + cl e in two 32-bit products (cl e within
+ * +-2^(FX_UBITS + 1)); the rounding term is a multiple of 2^16, so the
+ * shift splits exactly (#17). Elsewhere the top word of c e 2^(32 -
+ * FX_UBITS) (|e 2^(32 - FX_UBITS)| <= 2^17) is h = floor(c e /
+ * 2^FX_UBITS), and the rounded quotient is floor((h + 1) / 2): one
+ * multiply and no 64-bit add or shift (#17: seed 2,803 -> 2,775
+ * instructions a pixel on the M3). */
+static inline int32_t fx_renorm_p(int32_t c, int32_t e)
 {
-    int32_t p;
-    if (FX_SOFT_MUL64) {
-        p = ((c >> 16) * e + (((int32_t)((uint32_t)c & 0xFFFFu) * e) >> 16) +
-             (FX_UONE >> 16)) >> (FX_UBITS - 15);
-    } else {
-        const int32_t e2 = e * ((int32_t)1 << (32 - FX_UBITS));
-        p = ((int32_t)(fx_imul64(c, e2) >> 32) + 1) >> 1;
-    }
-    /* Within +-1 in one test: v ^ sg is |v| - 1 for v < 0 and v
-     * otherwise, below FX_UONE unless |v| > FX_UONE or v = FX_UONE, and
-     * then the result is +-FX_UONE with the sign of v (#17: seed 2,640.5
-     * -> 2,638.3 instructions a pixel on the M3, 7,299.3 -> 7,290.1 on
-     * the M0). */
-    const int32_t v = c - p;
+    if (FX_SOFT_MUL64)
+        return ((c >> 16) * e +
+                (((int32_t)((uint32_t)c & 0xFFFFu) * e) >> 16) +
+                (FX_UONE >> 16)) >> (FX_UBITS - 15);
+    const int32_t e2 = e * ((int32_t)1 << (32 - FX_UBITS));
+    return ((int32_t)(fx_imul64(c, e2) >> 32) + 1) >> 1;
+}
+
+/* v kept within +-1 in one test: v ^ sg is |v| - 1 for v < 0 and v
+ * otherwise, below FX_UONE unless |v| > FX_UONE or v = FX_UONE, and then
+ * the result is +-FX_UONE with the sign of v (#17: seed 2,640.5 ->
+ * 2,638.3 instructions a pixel on the M3, 7,299.3 -> 7,290.1 on the
+ * M0). */
+static inline int32_t fx_unit_clamp(int32_t v)
+{
     const int32_t sg = v >> 31;
     if ((uint32_t)(v ^ sg) < (uint32_t)FX_UONE)
         return v;
     return (FX_UONE ^ sg) - sg;
+}
+
+/* (x, y, z), each kept within +-1 (fx_unit_clamp): out of line, for the
+ * rare vector that needs it. */
+fx_dir3 fx_d3_clamp(int32_t x, int32_t y, int32_t z);
+
+/* One component of fx_d3_renorm: c (1 - e / 2), kept within +-1. */
+static inline int32_t fx_renorm_c(int32_t c, int32_t e)
+{
+    return fx_unit_clamp(c - fx_renorm_p(c, e));
 }
 
 /* Unit vector along u, a vector already within 2^-15 of unit length (a
@@ -275,6 +287,22 @@ static inline fx_dir3 fx_d3_renorm(fx_dir3 u)
                                  ((uint32_t)(t >> 32) << (32 - FX_UBITS))) -
                                 (FX_SOFT_MUL64 ? (uint32_t)(lim >> FX_UBITS)
                                                : 0u));
+    if (!FX_SOFT_MUL64) {
+        /* One test for the three clamps, which a renormalised vector
+         * nearly never needs: each c - p within [-1, 1) is one unsigned
+         * compare of the biased value (wrapping), and 2 FX_UONE is a
+         * power of two, so the three can be or-ed together (#17: seed
+         * 2,646 -> 2,629 instructions a pixel on the Cortex-M3; on the
+         * M0 it cost the inlining of rt_reflect_dir_dn, glass 0.3 %). */
+        const int32_t x = u.x - fx_renorm_p(u.x, e);
+        const int32_t y = u.y - fx_renorm_p(u.y, e);
+        const int32_t z = u.z - fx_renorm_p(u.z, e);
+        if ((((uint32_t)x + (uint32_t)FX_UONE) |
+             ((uint32_t)y + (uint32_t)FX_UONE) |
+             ((uint32_t)z + (uint32_t)FX_UONE)) < 2u * (uint32_t)FX_UONE)
+            return fx_d3(x, y, z);
+        return fx_d3_clamp(x, y, z);
+    }
     return fx_d3(fx_renorm_c(u.x, e), fx_renorm_c(u.y, e),
                  fx_renorm_c(u.z, e));
 }

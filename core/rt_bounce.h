@@ -32,61 +32,16 @@ static inline int32_t rt_dotu_of(int64_t dn)
     return (int32_t)((dn + ((int64_t)1 << (FX_UBITS - 1))) >> FX_UBITS);
 }
 
-/* c - this is c (1 - e / 2) as fx_renorm_c forms it with a 64-bit
- * multiply, before its clamp. */
-static inline int32_t rt_renorm_p(int32_t c, int32_t e)
-{
-    const int32_t e2 = e * ((int32_t)1 << (32 - FX_UBITS));
-    return ((int32_t)(fx_imul64(c, e2) >> 32) + 1) >> 1;
-}
-
-/* (x, y, z), each kept within +-1 as fx_renorm_c keeps it: out of line,
- * as it is nearly never needed. */
-RT_NOINLINE static fx_dir3 rt_unit_clamp3(int32_t x, int32_t y, int32_t z)
-{
-    x = x > FX_UONE ? FX_UONE : (x < -FX_UONE ? -FX_UONE : x);
-    y = y > FX_UONE ? FX_UONE : (y < -FX_UONE ? -FX_UONE : y);
-    z = z > FX_UONE ? FX_UONE : (z < -FX_UONE ? -FX_UONE : z);
-    return fx_d3(x, y, z);
-}
-
-/* fx_d3_renorm(u), the same value, with one test for the clamp of every
- * component to +-1 (fx_renorm_c), which a mirror direction nearly never
- * needs: c - p within [-1, 1) for all three is one unsigned compare of
- * the biased values (wrapping) or-ed together (#17: seed 2,646 -> 2,629
- * instructions a pixel on the Cortex-M3). Not on the M0, where it cost
- * the inlining of rt_reflect_dir_dn (glass 0.3 % dearer). */
-static inline fx_dir3 rt_renorm_mirror(fx_dir3 u)
-{
-    const uint64_t s = fx_len2_raw(u.x, u.y, u.z) -
-                       ((uint64_t)1 << (2 * FX_UBITS)) +
-                       ((uint64_t)1 << (FX_UBITS - 1));
-    const uint64_t lim = (uint64_t)1 << (2 * FX_UBITS - 15);
-    if (s + lim >= 2 * lim + ((uint64_t)1 << FX_UBITS))
-        return fx_d3_normalize(fx_d3_raw(u));
-    const int32_t e = (int32_t)(((uint32_t)s >> FX_UBITS) |
-                                ((uint32_t)(s >> 32) << (32 - FX_UBITS)));
-    const int32_t x = u.x - rt_renorm_p(u.x, e);
-    const int32_t y = u.y - rt_renorm_p(u.y, e);
-    const int32_t z = u.z - rt_renorm_p(u.z, e);
-    if ((((uint32_t)x + (uint32_t)FX_UONE) |
-         ((uint32_t)y + (uint32_t)FX_UONE) |
-         ((uint32_t)z + (uint32_t)FX_UONE)) < 2u * (uint32_t)FX_UONE)
-        return fx_d3(x, y, z);
-    return rt_unit_clamp3(x, y, z);
-}
-
 /* Mirror direction d - 2 (d.n) n of unit d about unit n, given the exact
  * dn = fx_d3_dot_raw(d, n): formed from the rounded d.n, then only
- * renormalised (rt_renorm_mirror, fx_d3_renorm), since the reflection of
- * a unit vector is one. */
+ * renormalised (fx_d3_renorm), since the reflection of a unit vector is
+ * one. */
 static inline fx_dir3 rt_reflect_dir_dn(fx_dir3 d, fx_dir3 n, int64_t dn)
 {
     const int32_t nk = -rt_dotu_of(dn); /* |k| <= 2^FX_UBITS */
-    const fx_dir3 u = fx_d3(rt_mirror_c(d.x, nk, n.x),
-                            rt_mirror_c(d.y, nk, n.y),
-                            rt_mirror_c(d.z, nk, n.z));
-    return FX_SOFT_MUL64 ? fx_d3_renorm(u) : rt_renorm_mirror(u);
+    return fx_d3_renorm(fx_d3(rt_mirror_c(d.x, nk, n.x),
+                           rt_mirror_c(d.y, nk, n.y),
+                           rt_mirror_c(d.z, nk, n.z)));
 }
 
 /* The same, finding d.n itself. */
