@@ -24,8 +24,7 @@
  * as unlikely for its callers (RT_COLD; #17: 24 bytes less flash on the
  * an385, and 1.2 and 1.8 instructions a pixel fewer on the M3 and M0). */
 RT_COLD static int bsphere_fine(const fx_vec3 *c, int64_t t,
-                                    const rt_ray *ray, fx_t r,
-                                    uint64_t *disc)
+                                const rt_ray *ray, fx_t r, uint64_t *disc)
 {
     const int64_t ox = (int64_t)c->x - ray->o.x;
     const int64_t oy = (int64_t)c->y - ray->o.y;
