@@ -39,6 +39,7 @@ include mk/test.mk
 -include mk/docs.mk
 -include mk/accuracy.mk
 -include mk/oled.mk
+-include mk/profile.mk
 
 .PHONY: all clean print-%
 all: $(FIXTRACE)

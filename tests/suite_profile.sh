@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# `make profile` (mk/profile.mk, tools/profile/): the seed scene at 48x36
+# on the an385 under the instruction-count plugin:
+# - the image is byte-identical to the host's (the plugin only counts);
+# - the plugin's count covers the firmware's own (the render) and exceeds
+#   it by no more than start-up and reporting take (2 %);
+# - the report's rows add up to that count, and name the tracer's
+#   functions; --inline and --lines give their tables;
+# - a malformed count file is refused with file:line:col and exit 1.
+set -u
+cd "$(dirname "$0")/.."
+FT=${FIXTRACE:-build/posix/fixtrace}
+MK=${MAKE:-make}
+W=48 H=36
+pass=0 fail=0
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAILED: $*"; }
+
+missing=""
+for t in arm-none-eabi-gcc qemu-system-arm python3; do
+    command -v "$t" >/dev/null || missing="${missing:+$missing }$t"
+done
+if [ -n "$missing" ]; then
+    echo "SKIPPED: make profile ($missing missing)"
+    echo "0 passed, 0 failed, 1 skipped"
+    exit 0
+fi
+
+fw=$tmp/fw
+"$FT" -q -W $W -H $H -o "$tmp/host.ppm" scenes/seed.scene || bad "host render"
+if ! "$MK" -s profile BOARD=an385 WIDTH=$W HEIGHT=$H FW_BUILD="$fw" \
+    PROFILE="--inline --lines 5" >"$tmp/make.log" 2>&1; then
+    bad "make profile failed: $(head -c 600 "$tmp/make.log")"
+    echo "$pass passed, $fail failed"
+    exit 1
+fi
+cmp -s "$fw/profile.ppm" "$tmp/host.ppm" && ok ||
+    bad "the image under the profiler differs from the host's"
+
+counted=$(awk '{s += $2} END {print s + 0}' "$fw/profile.txt")
+render=$(awk '$1 == "instructions" {print $2}' "$fw/profile.log")
+pixels=$(awk '$1 == "pixels" {print $2}' "$fw/profile.log")
+if [ -n "$render" ] && [ "$counted" -ge "$render" ] &&
+    [ "$counted" -le $((render + render / 50)) ]; then
+    ok
+else
+    bad "plugin count $counted against the firmware's ${render:-none}"
+fi
+
+# The inline table's rows, times the pixels, give back the count (each
+# row is rounded to 0.05 a pixel).
+sum=$(awk -F'|' '/^\| inlined function/ {t = 1; next}
+    t && /^\|[^-]/ {s += $3} t && /^$/ {exit} END {printf "%.0f", s * 1000}' \
+    "$fw/profile.md")
+want=$(awk -v c="$counted" -v p="$pixels" 'BEGIN {printf "%.0f", c / p * 1000}')
+rows=$(awk '/^\| inlined function/ {t = 1; next} t && /^\|[^-]/ {n++}
+    t && /^$/ {exit} END {print n + 0}' "$fw/profile.md")
+if [ $((sum > want ? sum - want : want - sum)) -le $((rows * 50 + 1)) ]; then
+    ok
+else
+    bad "the inline table adds up to $sum/1000 a pixel, not $want/1000"
+fi
+grep -q '^| rt_intersect>' "$fw/profile.md" && grep -q '^| shade' \
+    "$fw/profile.md" && ok || bad "the tracer's functions are not in the table"
+n=$(awk '/^\| source line/ {t = 1; next} t && /^\| [a-z_]+\.[ch]:[0-9]+ /' \
+    "$fw/profile.md" | wc -l)
+[ "$n" -eq 5 ] && ok || bad "--lines 5 gave $n source lines"
+
+# Per function, from the same counts.
+python3 tools/profile/report.py --tools arm-none-eabi- "$fw/fixtrace.elf" \
+    "$fw/profile.txt" "$fw/profile.log" >"$tmp/fn.md" &&
+    grep -q '^| rt_intersect |' "$tmp/fn.md" && ok ||
+    bad "the per-function report: $(head -c 300 "$tmp/fn.md")"
+
+printf '1000 5\nnot a line\n' >"$tmp/bad.txt"
+if python3 tools/profile/report.py "$fw/fixtrace.elf" "$tmp/bad.txt" \
+    "$fw/profile.log" >"$tmp/out" 2>"$tmp/err"; then
+    bad "a malformed count file was accepted"
+else
+    grep -q "bad.txt:2:1: " "$tmp/err" && [ ! -s "$tmp/out" ] && ok ||
+        bad "malformed counts: $(cat "$tmp/err")"
+fi
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
