@@ -144,12 +144,12 @@ static int hit_quad(const rt_object *o, const rt_ray *r, fx_t tmin,
         const int up = o->n.y > 0;
         const int32_t sdy = up ? r->d.y : -r->d.y;
         const uint32_t ud = (uint32_t)(sdy < 0 ? -sdy : sdy);
-        /* |den| < RT_PAR_DOT */
-        if (ud < ((uint32_t)1 << (FX_UBITS - 16)))
-            return 0;
         const int64_t m =
             (int64_t)o->dist - (up ? r->o.y : -(int64_t)r->o.y);
         if ((m < 0) != (sdy < 0))
+            return 0;
+        /* |den| < RT_PAR_DOT */
+        if (ud < ((uint32_t)1 << (FX_UBITS - 16)))
             return 0;
         /* |m| <= 2^32: below 2^62 */
         const uint64_t n2 = ((uint64_t)(m < 0 ? -m : m) << FX_UBITS) +
