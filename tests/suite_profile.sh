@@ -55,7 +55,8 @@ fi
 sum=$(awk -F'|' '/^\| inlined function/ {t = 1; next}
     t && /^\|[^-]/ {s += $3} t && /^$/ {exit} END {printf "%.0f", s * 1000}' \
     "$fw/profile.md")
-want=$(awk -v c="$counted" -v p="$pixels" 'BEGIN {printf "%.0f", c / p * 1000}')
+want=$(awk -v c="$counted" -v p="$pixels" \
+    'BEGIN {printf "%.0f", c / p * 1000}')
 rows=$(awk '/^\| inlined function/ {t = 1; next} t && /^\|[^-]/ {n++}
     t && /^$/ {exit} END {print n + 0}' "$fw/profile.md")
 if [ $((sum > want ? sum - want : want - sum)) -le $((rows * 50 + 1)) ]; then
