@@ -19,6 +19,10 @@ $(PROF_PLUGIN): tools/profile/insncount.c
 
 .PHONY: profile
 profile: $(FW_ELF) $(PROF_PLUGIN)
+	$(Q)command -v $(firstword $(FW_QEMU)) >/dev/null || { \
+	    echo "$(firstword $(FW_QEMU)) not found; install it with:" \
+	    "apt-get install --no-install-recommends $(FW_QEMU_PKG)" >&2; \
+	    exit 1; }
 	$(Q)command -v python3 >/dev/null || { echo "python3 not found;" \
 	    "install it with: apt-get install --no-install-recommends" \
 	    "python3" >&2; exit 1; }
