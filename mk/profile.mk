@@ -35,7 +35,8 @@ profile: $(FW_ELF) $(PROF_PLUGIN)
 	    echo "qemu: exit status $$rc under the profiler" >&2; exit 1; }
 	$(Q)python3 tools/profile/report.py --tools $(FW_PREFIX) $(PROFILE) \
 	    $< $(PROF_COUNTS) $(FW_BUILD)/profile.log \
-	    >$(FW_BUILD)/profile.md.tmp && \
-	    mv -f $(FW_BUILD)/profile.md.tmp $(FW_BUILD)/profile.md
+	    >$(FW_BUILD)/profile.md.tmp || { \
+	    rm -f $(FW_BUILD)/profile.md.tmp; exit 1; }
+	$(Q)mv -f $(FW_BUILD)/profile.md.tmp $(FW_BUILD)/profile.md
 	$(Q)head -n 16 $(FW_BUILD)/profile.md
 	@echo "wrote $(FW_BUILD)/profile.md"
