@@ -48,9 +48,17 @@ def read_log(path):
     return figs
 
 
+def run(cmd, stdin=None):
+    """A binutils tool's output; a missing or failing tool is an error."""
+    try:
+        return subprocess.run(cmd, input=stdin, capture_output=True,
+                              text=True, check=True).stdout
+    except (OSError, subprocess.CalledProcessError) as e:
+        fail('%s: %s' % (cmd[0], getattr(e, 'stderr', None) or e))
+
+
 def functions(nm, elf):
-    out = subprocess.run([nm, '-S', '--defined-only', elf],
-                         capture_output=True, text=True, check=True).stdout
+    out = run([nm, '-S', '--defined-only', elf])
     syms = []
     for line in out.splitlines():
         p = line.split()
@@ -73,9 +81,8 @@ def by_function(syms, counts):
 def by_source(a2l, elf, counts, inline):
     """Counts per innermost inlined function (inline) or per line."""
     pcs = sorted(counts)
-    res = subprocess.run([a2l, '-a', '-f', '-i', '-e', elf],
-                         input=''.join('%x\n' % pc for pc in pcs),
-                         capture_output=True, text=True, check=True).stdout
+    res = run([a2l, '-a', '-f', '-i', '-e', elf],
+              ''.join('%x\n' % pc for pc in pcs))
     agg = collections.Counter()
     frames, pc = [], None
 
