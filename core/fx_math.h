@@ -62,6 +62,16 @@ static inline fx_t fx_sat64(int64_t v)
 #define FX_SOFT_MUL64 0
 #endif
 
+/* 1 where the core has no count-leading-zeros instruction: ARMv6-M, and
+ * RISC-V without the Zbb extension (the rv32 board's RV32IMAC). There
+ * __builtin_clz and __builtin_ctz are library calls of about 20
+ * instructions; fx_clz32 and fx_ctz32 use a multiply and a table. */
+#if defined(__ARM_ARCH_6M__) || (defined(__riscv) && !defined(__riscv_zbb))
+#define FX_SOFT_CLZ 1
+#else
+#define FX_SOFT_CLZ 0
+#endif
+
 /* hi 2^32 + lo, as the register pair it is. */
 static inline uint64_t fx_pair64(uint32_t hi, uint32_t lo)
 {
@@ -217,18 +227,18 @@ static inline fx_t fx_from_q32(int64_t q)
     return r == FX_MAX ? r : r + (fx_t)(((uint32_t)q >> 15) & 1);
 }
 
-/* fx_clz32's and fx_ctz32's tables on ARMv6-M (fx_math.c). */
+/* fx_clz32's and fx_ctz32's tables (FX_SOFT_CLZ; fx_math.c). */
 extern const uint8_t fx_clz_table[32], fx_ctz_table[32];
 
-/* Number of leading zero bits of x (0..31); exact. x must not be 0. On
- * ARMv6-M (FX_SOFT_MUL64), which has no CLZ, __builtin_clz is a library
- * call of 19 instructions: there x with every bit below its top one set,
- * 2^(32 - clz) - 1, times a de Bruijn constant puts a distinct 5-bit
- * index in the top bits (#17). */
+/* Number of leading zero bits of x (0..31); exact. x must not be 0.
+ * Without CLZ (FX_SOFT_CLZ) __builtin_clz is a library call of about 20
+ * instructions: there x with every bit below its top one set, 2^(32 -
+ * clz) - 1, times a de Bruijn constant puts a distinct 5-bit index in
+ * the top bits (#17). */
 static inline int fx_clz32(uint32_t x)
 {
 #if defined(__GNUC__)
-    if (FX_SOFT_MUL64) {
+    if (FX_SOFT_CLZ) {
         x |= x >> 1;
         x |= x >> 2;
         x |= x >> 4;
@@ -247,14 +257,14 @@ static inline int fx_clz32(uint32_t x)
 #endif
 }
 
-/* Number of trailing zero bits of x (0..31); exact. x must not be 0. On
- * ARMv6-M (FX_SOFT_MUL64), which has no CLZ or RBIT, __builtin_ctz is a
- * library call of 18 instructions: there the lowest set bit times a de
- * Bruijn constant puts a distinct 5-bit index in the top bits (#17). */
+/* Number of trailing zero bits of x (0..31); exact. x must not be 0.
+ * Without CLZ (FX_SOFT_CLZ) __builtin_ctz is a library call of about 20
+ * instructions: there the lowest set bit times a de Bruijn constant puts
+ * a distinct 5-bit index in the top bits (#17). */
 static inline int fx_ctz32(uint32_t x)
 {
 #if defined(__GNUC__)
-    if (FX_SOFT_MUL64)
+    if (FX_SOFT_CLZ)
         return fx_ctz_table[((x & (0u - x)) * 0x077CB531u) >> 27];
     return __builtin_ctz(x);
 #else
