@@ -1,5 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* rt_camera: the camera frame of a render (rt_camera.h). */
+/* The soft 64-bit products (FX_SOFT_MUL64) out of line (fx_math.h): this
+ * file's code runs once a render or a row (#17: 60 bytes less flash on
+ * the m0). */
+#define FX_MUL64_CALL 1
 #include "rt_camera.h"
 
 /* Once a render: compiled for size (RT_COLD). */
