@@ -183,3 +183,11 @@ uint32_t fx_udiv64_32(uint64_t n, uint32_t d)
     }
     return q1 * b + q0;
 }
+
+uint64_t fx_udiv64(uint64_t n, uint32_t d)
+{
+    const uint32_t hi = (uint32_t)(n >> 32), qh = hi / d;
+    /* The rest, (hi - qh d) 2^32 + the low word, is below d 2^32. */
+    return fx_pair64(qh, fx_udiv64_32(fx_pair64(hi - qh * d, (uint32_t)n),
+                                      d));
+}

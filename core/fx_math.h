@@ -308,6 +308,10 @@ uint32_t fx_isqrt64(uint64_t a);
  * Cortex-M). */
 uint32_t fx_udiv64_32(uint64_t n, uint32_t d);
 
+/* floor(n / d) for d > 0 and any n, exact: a 32-bit divide of the high
+ * word, then fx_udiv64_32 of the rest (its quotient fits 32 bits). */
+uint64_t fx_udiv64(uint64_t n, uint32_t d);
+
 /* tan(deg / 2) for an angle of 0 < deg < 180 degrees, as Q32.32 (32
  * fraction bits, so that a small field of view keeps its precision):
  * relative error about 2^-28 before the final rounding to nearest;

@@ -18,11 +18,14 @@ static void sincos30(int64_t x, int64_t *s, int64_t *c)
     const int64_t one = (int64_t)1 << 30;
     int64_t x2 = mul30(x, x);
     int64_t sn = one, cs = one;
-    /* Horner from the highest term: sin = x(1 - x^2/6(1 - x^2/20(...))). */
+    /* Horner from the highest term: sin = x(1 - x^2/6(1 - x^2/20(...))).
+     * x2 < 2^30 (0.62 2^30), so sn and cs stay in (0, 2^30] and each
+     * product in [0, 2^30]: a 32-bit divide is exact (a 64-bit one is a
+     * library call on Cortex-M). */
     for (int k = 13; k >= 3; k -= 2)
-        sn = one - mul30(x2, sn) / (k * (k - 1));
+        sn = one - (uint32_t)mul30(x2, sn) / (uint32_t)(k * (k - 1));
     for (int k = 14; k >= 2; k -= 2)
-        cs = one - mul30(x2, cs) / (k * (k - 1));
+        cs = one - (uint32_t)mul30(x2, cs) / (uint32_t)(k * (k - 1));
     *s = mul30(x, sn);
     *c = cs;
 }
@@ -47,8 +50,10 @@ int64_t fx_tan_half_deg_q32(fx_t deg)
     const int64_t most = ((int64_t)1 << 47) - 1;
     if (c <= 0)
         return most;
-    /* s < 2^31, so s 2^32 < 2^63; a quotient past 2^47 saturates. */
+    /* s in [0, 2^31), so s 2^32 < 2^63; a quotient past 2^47 saturates.
+     * c is in (0, 2^30]. */
     if (s >= (c << 15)) /* s / c >= 32768 */
         return most;
-    return ((s << 32) + c / 2) / c;
+    return (int64_t)fx_udiv64(((uint64_t)s << 32) + (uint64_t)(c / 2),
+                              (uint32_t)c);
 }

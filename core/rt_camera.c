@@ -1,5 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* rt_camera: the camera frame of a render (rt_camera.h). */
+/* The soft 64-bit products (FX_SOFT_MUL64) out of line (fx_math.h): this
+ * file's code runs once a render or a row (#17: 60 bytes less flash on
+ * the m0). */
+#define FX_MUL64_CALL 1
 #include "rt_camera.h"
 
 /* Once a render: compiled for size (RT_COLD). */
@@ -15,7 +19,7 @@ RT_COLD void rt_cam_setup(rt_cam_frame *cf, const rt_scene *s, unsigned width,
     cf->n = n;
     /* tan(fov / 2) with 32 fraction bits, below 2^47. */
     int64_t half = fx_tan_half_deg_q32(s->cam.fov);
-    cf->step = half / (int64_t)(n * height);
+    cf->step = (int64_t)fx_udiv64((uint64_t)half, n * height);
     /* The largest offset of a sample, |k| < n max(W, H), with 32 fraction
      * bits; keep 31 bits of it, but at most 30 fraction bits, so that
      * w 2^fbits + sy up + sx right stays below 2^60 + 2^62. */

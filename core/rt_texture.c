@@ -3,34 +3,75 @@
 #include "rt_texture.h"
 #include "fx_rsqrt.h" /* fx_umulhi32 */
 
-/* Low word of the cell index of p - a along one axis for cells of size
- * m->tex_scale, floor((p - a) / size), exact at any distance from the
- * origin a: the texel needs only the parity of the sum. The difference
- * is formed in 64 bits only when it exceeds Q16.16, that is when p and
- * a differ in sign and so do p and the wrapped difference (#17: rt_texel
- * 61 -> 42 instructions a call on the M3, 129 -> 108 on the M0). */
-/* cell's 64-bit path (a library division), out of line on the M0
- * (FX_SOFT_MUL64) (#17: rt_texel 3 instructions fewer a call there; on
- * the M3 it saves nothing). */
-static RT_COLD uint32_t cell_far(const rt_material *m, fx_t p, fx_t a)
+/* floor((p - a) / d), d > 0, where p - a overflows int32 (p and a of
+ * opposite signs, 2^31 < |p - a| < 2^32): its low word, with the
+ * remainder, in [0, d), in the high word (a register pair, no memory).
+ * The magnitude fits 32 bits, so one 32-bit divide gives it; below zero
+ * the floor is -q - 1 (~q in the low word) unless the division is exact
+ * (#17: a 64-bit library divide before; rt_texture's code 544 bytes
+ * smaller on the an385). */
+static inline uint64_t floor_div_far(fx_t p, fx_t a, fx_t d)
 {
-    fx_t rem;
-    return (uint32_t)fx_floor_div((int64_t)p - a, m->tex_scale, m->tex_rcp,
-                                  &rem);
+    const uint32_t w = (uint32_t)p - (uint32_t)a; /* p - a mod 2^32 */
+    const uint32_t ud = (uint32_t)d;
+    if (p >= 0) { /* p - a in (2^31, 2^32): w itself */
+        const uint32_t q = w / ud;
+        return fx_pair64(w - q * ud, q);
+    }
+    const uint32_t m = 0u - w; /* a - p, in (2^31, 2^32) */
+    const uint32_t q = m / ud, r = m - q * ud;
+    return r ? fx_pair64(ud - r, ~q) : fx_pair64(0, 0u - q);
 }
 
+/* A word whose sign bit is set where p - a overflows int32: where p and
+ * a differ in sign, and so do p and the wrapped difference. */
+static inline uint32_t far_bit(fx_t p, fx_t a)
+{
+    const uint32_t d = (uint32_t)p - (uint32_t)a;
+    return ((uint32_t)p ^ (uint32_t)a) & ((uint32_t)p ^ d);
+}
+
+/* 1 where p - a overflows int32. */
+static inline int far_apart(fx_t p, fx_t a)
+{
+    return (int)(far_bit(p, a) >> 31);
+}
+
+/* Low word of the cell index of p - a along one axis for cells of size
+ * m->tex_scale, floor((p - a) / size), for a difference that fits int32
+ * (not far_apart): the texel needs only the parity of the sum (#17:
+ * rt_texel 61 -> 42 instructions a call on the M3, 129 -> 108 on the
+ * M0). */
 static inline uint32_t cell(const rt_material *m, fx_t p, fx_t a)
 {
     fx_t rem;
-    uint32_t d = (uint32_t)p - (uint32_t)a;
-    if ((((uint32_t)p ^ (uint32_t)a) & ((uint32_t)p ^ d)) >> 31) {
-        if (FX_SOFT_MUL64)
-            return cell_far(m, p, a);
-        return (uint32_t)fx_floor_div((int64_t)p - a, m->tex_scale,
-                                      m->tex_rcp, &rem);
-    }
     return (uint32_t)fx_floor_div((int32_t)((int64_t)p - a), m->tex_scale,
                                   m->tex_rcp, &rem);
+}
+
+/* The same at any distance from the origin a. */
+static inline uint32_t cell_any(const rt_material *m, fx_t p, fx_t a)
+{
+    if (far_apart(p, a))
+        return (uint32_t)floor_div_far(p, a, m->tex_scale);
+    return cell(m, p, a);
+}
+
+/* rt_texel where some difference overflows int32 (points over 32,768
+ * units from o->a), out of line: the common case then keeps nothing
+ * across a call (#17: rt_texel 41.6 -> 40.8 instructions a call on the
+ * M3, 104.8 -> 97.6 on the M0). */
+static RT_COLD unsigned texel_far(const rt_material *m, const rt_object *o,
+                                  const fx_vec3 *p)
+{
+    uint32_t idx = cell_any(m, p->x, o->a.x) + cell_any(m, p->z, o->a.z);
+    if (m->texture == RT_TEX_STRIPES)
+        idx = m->axis == 0 ? cell_any(m, p->x, o->a.x)
+                           : (m->axis == 1 ? cell_any(m, p->y, o->a.y)
+                                           : cell_any(m, p->z, o->a.z));
+    else if (m->texture == RT_TEX_CHECKER3D)
+        idx += cell_any(m, p->y, o->a.y);
+    return idx & 1u;
 }
 
 /* Textures follow the object, not the world origin: cells count from the
@@ -41,14 +82,29 @@ unsigned rt_texel(const rt_material *m, const rt_object *o, fx_vec3 p)
     uint32_t idx;
     switch (m->texture) {
     case RT_TEX_STRIPES:
-        idx = m->axis == 0 ? cell(m, p.x, o->a.x)
-                           : (m->axis == 1 ? cell(m, p.y, o->a.y)
-                                           : cell(m, p.z, o->a.z));
+        if (m->axis == 0) {
+            if (far_apart(p.x, o->a.x))
+                return texel_far(m, o, &p);
+            idx = cell(m, p.x, o->a.x);
+        } else if (m->axis == 1) {
+            if (far_apart(p.y, o->a.y))
+                return texel_far(m, o, &p);
+            idx = cell(m, p.y, o->a.y);
+        } else {
+            if (far_apart(p.z, o->a.z))
+                return texel_far(m, o, &p);
+            idx = cell(m, p.z, o->a.z);
+        }
         break;
     case RT_TEX_CHECKER:
+        if ((far_bit(p.x, o->a.x) | far_bit(p.z, o->a.z)) >> 31)
+            return texel_far(m, o, &p);
         idx = cell(m, p.x, o->a.x) + cell(m, p.z, o->a.z);
         break;
     case RT_TEX_CHECKER3D:
+        if ((far_bit(p.x, o->a.x) | far_bit(p.y, o->a.y) |
+             far_bit(p.z, o->a.z)) >> 31)
+            return texel_far(m, o, &p);
         idx = cell(m, p.x, o->a.x) + cell(m, p.y, o->a.y) +
               cell(m, p.z, o->a.z);
         break;
@@ -187,13 +243,14 @@ static inline void lattice_axis(const rt_material *m, fx_t p, fx_t a,
     const uint32_t d = (uint32_t)m->bump_scale;
     fx_t rem;
     uint32_t f, r;
-    uint32_t n = (uint32_t)p - (uint32_t)a;
-    if ((((uint32_t)p ^ (uint32_t)a) & ((uint32_t)p ^ n)) >> 31)
-        *i = (uint32_t)fx_floor_div((int64_t)p - a, m->bump_scale,
-                                    m->bump_rcp, &rem);
-    else
+    if (far_apart(p, a)) {
+        const uint64_t qr = floor_div_far(p, a, m->bump_scale);
+        *i = (uint32_t)qr;
+        rem = (fx_t)(qr >> 32);
+    } else {
         *i = (uint32_t)fx_floor_div((int32_t)((int64_t)p - a),
                                     m->bump_scale, m->bump_rcp, &rem);
+    }
     if (d <= 1u << 17) {
         f = frac_digit((uint32_t)rem << 15, d, m->bump_rcp, &r) << 15;
         f |= frac_digit(r << 15, d, m->bump_rcp, &r);
