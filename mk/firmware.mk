@@ -310,8 +310,9 @@ $(FW_BUILD)/core/%.o: core/%.c $(FW_FLAGS_STAMP) $(FW_EFFECTS)
 # code, which -O2 makes faster. FW_COLD_OPT is empty where FW_OPT is -Os.
 # fx_vec's out-of-line helpers are as fast there. On ARMv6-M (the M0 boards)
 # so is the row culling, rt_cull: -Os makes it both smaller and faster
-# (#17: seed 160x120 7,005.1 -> 6,999.7 instructions a pixel, 3,884 bytes
-# less text; on the M3 it would cost the many scene 0.3 %).
+# (#17: seed 160x120 6,972.4 -> 6,969.9 instructions a pixel, many 80x60
+# 10,351.9 -> 10,301.3, 1,640 bytes less text; on the M3 it would cost the
+# many scene 0.3 %).
 FW_COLD_SRC := rt_tracer rt_dirgrid rt_cutoff rt_sealed rt_scene rt_features \
     fx_trig fx_vec $(if $(filter -mcpu=cortex-m0%,$(FW_CPU)),rt_cull)
 FW_COLD_OPT := $(if $(filter -Os,$(FW_OPT)),,-Os)
