@@ -75,19 +75,23 @@ static inline int32_t mul_round_u(int32_t t, int32_t d)
     return (int32_t)((fx_imul64(t, d) + UHALF) >> FX_UBITS);
 }
 
-/* t e 2^-32 rounded (ties up), for bsphere's closest approach in units
- * of |d|. e = |d|^2 - 1 (rt_ray.e) is a few Q32.32 ulps: where 64-bit
- * products are built from 16-bit ones (the M0), two 32-bit products of
- * t's halves and e make t e. */
-static inline int32_t unit_corr(int32_t t, int32_t e)
+/* t e 2^-s rounded (ties up), s = 32 or 33: bsphere's closest approach
+ * in units of |d| (s = 32) and hit_sphere's half chord (s = 33). e =
+ * |d|^2 - 1 (rt_ray.e) is a few Q32.32 ulps: where 64-bit products are
+ * built from 16-bit ones (the M0), t e = hi 2^16 + lo for hi = (t >> 16)
+ * e and lo = (t mod 2^16) e, so the result is (hi + floor(lo / 2^16) +
+ * 2^(s - 17)) >> (s - 16), as lo mod 2^16 cannot carry into it: all in
+ * 32 bits, |hi| <= 2^30 and |lo| < 2^31 (#17: 26 -> 12 instructions a
+ * call on the M0). */
+static inline int32_t unit_corr(int32_t t, int32_t e, int s)
 {
     if (FX_SOFT_MUL64 && e >= -32768 && e <= 32767) {
-        const int32_t hi = (t >> 16) * e; /* |hi| <= 2^30 */
+        const int32_t hi = (t >> 16) * e;
         const int32_t lo = (int32_t)((uint32_t)t & 0xFFFFu) * e;
-        return (int32_t)(((int64_t)hi * 65536 + lo + ((int64_t)1 << 31)) >>
-                         32);
+        return (hi + (lo >> 16) + (1 << ((s - 17) & 31))) >> ((s - 16) & 31);
     }
-    return (int32_t)((fx_imul64(t, e) + ((int64_t)1 << 31)) >> 32);
+    return (int32_t)((fx_imul64(t, e) + ((int64_t)1 << ((s - 1) & 63))) >>
+                     (s & 63));
 }
 
 /* Closest approach of the ray to the bounding sphere (c, r). Returns 0 when
@@ -116,7 +120,7 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         /* Nothing for an exact unit d (e = 0; #17: 5 instructions a
          * pixel on either core). */
         if (ray->e != 0)
-            t32 -= unit_corr(t32, ray->e);
+            t32 -= unit_corr(t32, ray->e, 32);
 #if FX_HAVE_OVERFLOW_BUILTINS
         /* The same tests in 32 bits (r >= 0): t32 + r <= tmin is
          * t32 <= tmin - r, false when that underflows; t32 - r >= tmax is
