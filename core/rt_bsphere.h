@@ -75,19 +75,49 @@ static inline int32_t mul_round_u(int32_t t, int32_t d)
     return (int32_t)((fx_imul64(t, d) + UHALF) >> FX_UBITS);
 }
 
-/* t e 2^-32 rounded (ties up), for bsphere's closest approach in units
- * of |d|. e = |d|^2 - 1 (rt_ray.e) is a few Q32.32 ulps: where 64-bit
- * products are built from 16-bit ones (the M0), two 32-bit products of
- * t's halves and e make t e. */
-static inline int32_t unit_corr(int32_t t, int32_t e)
+/* mul_round_u for bsphere's h, where on the M0 the partial products
+ * give the result another way: with sh = FX_UBITS - 16, ra = th dh 2^(32
+ * - FX_UBITS) + a >> sh + b >> sh + tl dl >> FX_UBITS is below it by the
+ * three dropped fractions plus a half, 0 to 3, which the result mod
+ * 2^(32 - FX_UBITS) >= 4 gives: the top bits of the low word of t d +
+ * 2^(FX_UBITS - 1), one 32-bit product. Each term is within 2^31; the
+ * sum is taken mod 2^32, where the result is exact (#17: seed 6,933.8 ->
+ * 6,925.5 instructions a pixel on the M0; in hit_quad's two products
+ * mul_round_u does better). */
+static inline int32_t mul_round_w(int32_t t, int32_t d)
+{
+    if (FX_SOFT_MUL64 && FX_UBITS > 16 && FX_UBITS <= 30) {
+        const int32_t th = t >> 16, dh = d >> 16;
+        const uint32_t tl = (uint32_t)t & 0xFFFFu, dl = (uint32_t)d & 0xFFFFu;
+        const int sh = (FX_UBITS - 16) & 31, u = FX_UBITS & 31;
+        const int32_t a = th * (int32_t)dl, b = (int32_t)tl * dh;
+        const uint32_t ra = ((uint32_t)(th * dh) << ((32 - FX_UBITS) & 31)) +
+                            (uint32_t)(a >> sh) + (uint32_t)(b >> sh) +
+                            ((tl * dl) >> u);
+        const uint32_t w = (uint32_t)t * (uint32_t)d + (1u << (u - 1));
+        return (int32_t)(ra + (((w >> u) - ra) &
+                               ((1u << ((32 - FX_UBITS) & 31)) - 1u)));
+    }
+    return (int32_t)((fx_imul64(t, d) + UHALF) >> FX_UBITS);
+}
+
+/* t e 2^-s rounded (ties up), s = 32 or 33: bsphere's closest approach
+ * in units of |d| (s = 32) and hit_sphere's half chord (s = 33). e =
+ * |d|^2 - 1 (rt_ray.e) is a few Q32.32 ulps: where 64-bit products are
+ * built from 16-bit ones (the M0), t e = hi 2^16 + lo for hi = (t >> 16)
+ * e and lo = (t mod 2^16) e, so the result is (hi + floor(lo / 2^16) +
+ * 2^(s - 17)) >> (s - 16), as lo mod 2^16 cannot carry into it: all in
+ * 32 bits, |hi| <= 2^30 and |lo| < 2^31 (#17: 26 -> 12 instructions a
+ * call on the M0). */
+static inline int32_t unit_corr(int32_t t, int32_t e, int s)
 {
     if (FX_SOFT_MUL64 && e >= -32768 && e <= 32767) {
-        const int32_t hi = (t >> 16) * e; /* |hi| <= 2^30 */
+        const int32_t hi = (t >> 16) * e;
         const int32_t lo = (int32_t)((uint32_t)t & 0xFFFFu) * e;
-        return (int32_t)(((int64_t)hi * 65536 + lo + ((int64_t)1 << 31)) >>
-                         32);
+        return (hi + (lo >> 16) + (1 << ((s - 17) & 31))) >> ((s - 16) & 31);
     }
-    return (int32_t)((fx_imul64(t, e) + ((int64_t)1 << 31)) >> 32);
+    return (int32_t)((fx_imul64(t, e) + ((int64_t)1 << ((s - 1) & 63))) >>
+                     (s & 63));
 }
 
 /* Closest approach of the ray to the bounding sphere (c, r). Returns 0 when
@@ -116,7 +146,7 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         /* Nothing for an exact unit d (e = 0; #17: 5 instructions a
          * pixel on either core). */
         if (ray->e != 0)
-            t32 -= unit_corr(t32, ray->e);
+            t32 -= unit_corr(t32, ray->e, 32);
 #if FX_HAVE_OVERFLOW_BUILTINS
         /* The same tests in 32 bits (r >= 0): t32 + r <= tmin is
          * t32 <= tmin - r, false when that underflows; t32 - r >= tmax is
@@ -131,9 +161,9 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
             return 0;
 #endif
         /* Each h component is bounded by |oc| (h is a projection). */
-        int32_t hx = ox - mul_round_u(t32, ray->d.x);
-        int32_t hy = oy - mul_round_u(t32, ray->d.y);
-        int32_t hz = oz - mul_round_u(t32, ray->d.z);
+        int32_t hx = ox - mul_round_w(t32, ray->d.x);
+        int32_t hy = oy - mul_round_w(t32, ray->d.y);
+        int32_t hz = oz - mul_round_w(t32, ray->d.z);
         /* One ulp of slack (r < 2^29 here): the rounding of h cannot
          * decide this. On the M0 one unsigned compare a component: h +
          * rs, mod 2^32, is at most 2 rs exactly when |h| <= rs, as |h| <
