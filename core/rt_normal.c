@@ -157,6 +157,20 @@ RT_COLD static int side_step(const rt_ray *r, fx_t t, fx_vec3 p, fx_vec3 a,
 #define FINE_K_BITS 24
 static int64_t div_frac(int64_t n, int32_t h, int64_t *lo)
 {
+    if (FX_SOFT_MUL64) {
+        /* Without a divide instruction the signed 64-bit library divide
+         * is a long call and links two more: the same truncated quotient
+         * and remainder from |n| by fx_udiv64, and the fraction, below
+         * 2^FINE_K_BITS, by fx_udiv64_32 (#17: many 80x60 on the M0
+         * 10,205.8 -> 10,146.2 instructions a pixel, m0 text -592). */
+        const uint64_t un = n < 0 ? 0u - (uint64_t)n : (uint64_t)n;
+        const uint64_t uq = fx_udiv64(un, (uint32_t)h);
+        const uint32_t ur = (uint32_t)(un - uq * (uint32_t)h); /* < h */
+        const int64_t f = (int64_t)fx_udiv64_32((uint64_t)ur << FINE_K_BITS,
+                                                (uint32_t)h);
+        *lo = n < 0 ? -f : f;
+        return n < 0 ? -(int64_t)uq : (int64_t)uq;
+    }
     const int64_t q = n / h;
     *lo = (n - q * h) * ((int64_t)1 << FINE_K_BITS) / h;
     return q;
