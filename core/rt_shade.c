@@ -145,10 +145,13 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
          * 4,768.8 -> 4,738.6, 144 bytes less stack); on the M0 the value
          * (the array cost the mirrors 0.4 %). */
         fx_dir3 ldv, ldm[1];
-        if (FX_SOFT_MUL64)
+        if (FX_SOFT_MUL64) {
             ldv = fx_d3_normalize(lv);
-        else
+        } else {
             ldm[0] = fx_d3_normalize(lv);
+            ldv = ldm[0]; /* set for the analysers; not read */
+            (void)ldv;
+        }
         /* n.ld as fx_d3_dot rounds it; the highlight takes it exact. */
         const int64_t nl = rt_dot_raw(*np, FX_SOFT_MUL64 ? ldv : ldm[0]);
         fx_t ndl = rt_cos_fx(nl);
