@@ -32,12 +32,16 @@ static inline fx_t rt_cmul(fx_t a, fx_t b)
  * al with 0 <= al < 2^16, so a w + 2^15 = ah w 2^16 + (al w + 2^15),
  * where ah w lies in [-2^31, 2^31 - 2^16] and al w + 2^15 below 2^32, and
  * the sum below 2^31. Where the core has no 64-bit multiply
- * (FX_SOFT_MUL64, the M0) that is a few instructions instead of a call. */
+ * (FX_SOFT_MUL64, the M0) that is a few instructions instead of a call.
+ * The rounding is floor((floor(x / 2^15) + 1) / 2) = floor((x + 2^15) /
+ * 2^16): two shifts and an add of 1, where the Thumb-1 M0 built 2^15 in
+ * a register at every use (#17: seed 7,005.1 -> 6,985.3 instructions a
+ * pixel on the M0, 64 bytes less flash). */
 static inline fx_t rt_wmul_fast(fx_t a, fx_t w)
 {
     const int32_t ah = a >> 16;
     const uint32_t al = (uint32_t)a & 0xFFFFu;
-    return ah * w + (fx_t)((al * (uint32_t)w + 0x8000u) >> 16);
+    return ah * w + (fx_t)((((al * (uint32_t)w) >> 15) + 1u) >> 1);
 }
 
 /* 1 if rt_wmul_fast pays and applies to the weight w. */
