@@ -10,10 +10,11 @@ cd "$(dirname "$0")/.."
 MAKE=${MAKE:-make}
 QUICK=0
 [ "${1:-}" = --quick ] && QUICK=1
-# The plain host build, also under `make SANITIZE=1 test` (whose host
-# binary is build/posix-san's): its times are the ones docs/bench.md gives.
+# The plain host build, also under `make SANITIZE=1 test`, which sets
+# SANITIZE and HOST_BUILD=build/posix-san in the environment: its times
+# are the ones docs/bench.md gives.
 FT=build/posix/fixtrace
-$MAKE -s SANITIZE=0 "$FT" >/dev/null
+$MAKE -s SANITIZE=0 HOST_BUILD=build/posix "$FT" >/dev/null
 mkdir -p build/bench
 if [ $QUICK = 1 ]; then
     OUT=build/bench/quick.md W=48 H=36 SCENES=$(ls scenes/*.scene) BOARDS="an385"
