@@ -74,8 +74,12 @@ size_t qemu_plugin_insn_size(const struct qemu_plugin_insn *insn);
 
 PLUGIN_EXPORT int qemu_plugin_version = 1;
 
+#ifndef MAX_DEPTH /* -D for a test of the bounds */
 #define MAX_DEPTH 256
+#endif
+#ifndef MAX_CTX
 #define MAX_CTX (1u << 20)
+#endif
 #define MAX_COUNTERS (1u << 22)
 
 /* How a block ends. */
