@@ -13,7 +13,7 @@
 # stack). With --inclusive the plugin is tools/profile/callstack.c
 # instead, a shadow call stack, given the function entries of the ELF
 # from nm ($(FW_BUILD)/profile-entries.txt); profile.txt then holds
-# counts per call context and block.
+# counts per call context and block. Arm (Thumb) boards only.
 
 PROF_INCL := $(filter --inclusive,$(PROFILE))
 PROF_PLUGIN := $(HOST_BUILD)/tools/$(if $(PROF_INCL),callstack,insncount).so
@@ -35,6 +35,8 @@ $(PROF_ENTRIES): $(FW_ELF)
 
 .PHONY: profile
 profile: $(FW_ELF) $(PROF_PLUGIN) $(if $(PROF_INCL),$(PROF_ENTRIES))
+	$(if $(and $(PROF_INCL),$(FW_RISCV_BOARD)),$(Q)echo "PROFILE=--inclusive" \
+	    "reads Thumb code only (Arm boards); $(BOARD) is RISC-V" >&2; exit 1)
 	$(Q)command -v $(firstword $(FW_QEMU)) >/dev/null || { \
 	    echo "$(firstword $(FW_QEMU)) not found; install it with:" \
 	    "apt-get install --no-install-recommends $(FW_QEMU_PKG)" >&2; \
