@@ -3,13 +3,19 @@
 """Where a firmware's instructions go: the report of `make profile`.
 
   report.py --tools PREFIX ELF COUNTS LOG [--inline] [--lines N] [--top N]
+            [--inclusive [--depth-fn NAME]]
 
 COUNTS holds "pc count" lines (tools/profile/insncount.c), LOG the
 firmware's figures (its "instructions" and "pixels" lines). Prints a
 Markdown table of self instructions per pixel: per function, or with
 --inline per innermost inlined function ("caller>callee"), and with
---lines N the N hottest source lines. Self counts only: a function's
-callees are not in its row (port/baremetal/README.md).
+--lines N the N hottest source lines. A function's callees are not in
+its self count (port/baremetal/README.md).
+
+With --inclusive, COUNTS is a call-context profile
+(tools/profile/callstack.c) and the per-function table gives inclusive,
+self and calls per pixel, followed by the table by ray depth
+(tools/profile/inclusive.py); --inline and --lines work as before.
 PREFIX is the cross toolchain's, for its nm and addr2line."""
 import argparse
 import bisect
@@ -17,6 +23,8 @@ import collections
 import os
 import subprocess
 import sys
+
+import inclusive
 
 
 def fail(msg):
@@ -68,13 +76,22 @@ def functions(nm, elf):
     return syms
 
 
-def by_function(syms, counts):
+def namer(syms):
+    """name_of(addr): the function holding addr, or None."""
     starts = [s[0] for s in syms]
+
+    def name_of(addr):
+        i = bisect.bisect_right(starts, addr) - 1
+        ok = i >= 0 and addr < syms[i][0] + syms[i][1]
+        return syms[i][2] if ok else None
+    return name_of
+
+
+def by_function(syms, counts):
+    name_of = namer(syms)
     agg = collections.Counter()
     for pc, n in counts.items():
-        i = bisect.bisect_right(starts, pc) - 1
-        ok = i >= 0 and pc < syms[i][0] + syms[i][1]
-        agg[syms[i][2] if ok else '(no symbol)'] += n
+        agg[name_of(pc) or '(no symbol)'] += n
     return agg
 
 
@@ -133,6 +150,8 @@ def main():
     ap.add_argument('--inline', action='store_true')
     ap.add_argument('--lines', type=int, default=0)
     ap.add_argument('--top', type=int, default=30)
+    ap.add_argument('--inclusive', action='store_true')
+    ap.add_argument('--depth-fn', default='trace')
     ap.add_argument('elf')
     ap.add_argument('counts')
     ap.add_argument('log')
@@ -140,7 +159,13 @@ def main():
     for p in (a.elf, a.counts, a.log):
         if not os.path.isfile(p):
             fail('%s: no such file' % p)
-    counts = read_counts(a.counts)
+    if a.inclusive:
+        ctxs, ctx_counts = inclusive.read_profile(a.counts)
+        counts = collections.Counter()
+        for (_, pc), n in ctx_counts.items():
+            counts[pc] += n
+    else:
+        counts = read_counts(a.counts)
     figs = read_log(a.log)
     total = sum(counts.values())
     if total == 0:
@@ -153,11 +178,15 @@ def main():
               '(the rest is start-up and reporting)' %
               (figs['instructions'], figs['instructions'] / pixels))
     print()
+    if a.inclusive:
+        inclusive.tables(*inclusive.analyse(
+            ctxs, ctx_counts, namer(functions(a.tools + 'nm', a.elf)),
+            a.depth_fn), pixels, total, a.top, a.depth_fn)
     if a.inline:
         table('inlined function', by_source(a.tools + 'addr2line', a.elf,
                                             counts, True),
               pixels, total, a.top)
-    else:
+    elif not a.inclusive:
         table('function', by_function(functions(a.tools + 'nm', a.elf),
                                       counts), pixels, total, a.top)
     if a.lines > 0:
