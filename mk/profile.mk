@@ -21,7 +21,7 @@ PROF_COUNTS := $(FW_BUILD)/profile.txt
 PROF_ENTRIES := $(FW_BUILD)/profile-entries.txt
 PROF_ENTRY_ARG = $(if $(PROF_INCL),$(comma)entries=$(PROF_ENTRIES))
 
-$(HOST_BUILD)/tools/%.so: tools/profile/%.c
+$(HOST_BUILD)/tools/%.so: tools/profile/%.c tools/profile/qemu_plugin.h
 	@$(if $(Q),echo "  CC      $@")
 	$(Q)mkdir -p $(@D)
 	$(Q)$(CC) -O2 -Wall -Wextra -shared -fPIC -o $@ $<

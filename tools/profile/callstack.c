@@ -36,43 +36,11 @@
  *        E: function entry addresses, hex, one a line (bit 0, the Thumb
  *        bit, is ignored), e.g. from `nm` of the ELF
  *
- * Debian's QEMU (7.2) runs plugins but ships no plugin header: the few
- * API calls used are declared here, as that version defines them. */
+ * The plugin API's declarations: qemu_plugin.h. */
 #define _POSIX_C_SOURCE 200809L /* strdup */
 #include <inttypes.h>
-#include <stddef.h>
-#include <stdint.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 
-#define PLUGIN_EXPORT __attribute__((visibility("default")))
-
-typedef uint64_t qemu_plugin_id_t;
-struct qemu_plugin_tb;
-struct qemu_plugin_insn;
-typedef struct qemu_info_t qemu_info_t;
-enum qemu_plugin_cb_flags { QEMU_PLUGIN_CB_NO_REGS };
-
-void qemu_plugin_register_vcpu_tb_trans_cb(
-    qemu_plugin_id_t id,
-    void (*cb)(qemu_plugin_id_t id, struct qemu_plugin_tb *tb));
-void qemu_plugin_register_atexit_cb(qemu_plugin_id_t id,
-                                    void (*cb)(qemu_plugin_id_t id,
-                                               void *userdata),
-                                    void *userdata);
-void qemu_plugin_register_vcpu_tb_exec_cb(
-    struct qemu_plugin_tb *tb,
-    void (*cb)(unsigned int vcpu_index, void *userdata),
-    enum qemu_plugin_cb_flags flags, void *userdata);
-size_t qemu_plugin_tb_n_insns(const struct qemu_plugin_tb *tb);
-struct qemu_plugin_insn *qemu_plugin_tb_get_insn(
-    const struct qemu_plugin_tb *tb, size_t idx);
-uint64_t qemu_plugin_insn_vaddr(const struct qemu_plugin_insn *insn);
-const void *qemu_plugin_insn_data(const struct qemu_plugin_insn *insn);
-size_t qemu_plugin_insn_size(const struct qemu_plugin_insn *insn);
-
-PLUGIN_EXPORT int qemu_plugin_version = 1;
+#include "qemu_plugin.h"
 
 #ifndef MAX_DEPTH /* -D for a test of the bounds */
 #define MAX_DEPTH 256
@@ -337,25 +305,7 @@ static void on_exit(qemu_plugin_id_t id, void *userdata)
                 failed, MAX_DEPTH, MAX_CTX);
         return;
     }
-    /* Written beside the target and renamed: no half-written profile. */
-    const size_t len = strlen(out_path);
-    char *tmp = malloc(len + 5);
-    if (!tmp)
-        return;
-    memcpy(tmp, out_path, len);
-    memcpy(tmp + len, ".tmp", 5);
-    FILE *f = fopen(tmp, "w");
-    if (!f) {
-        fprintf(stderr, "callstack: cannot write %s\n", tmp);
-        free(tmp);
-        return;
-    }
-    write_profile(f);
-    if (fclose(f) != 0 || rename(tmp, out_path) != 0) {
-        fprintf(stderr, "callstack: cannot write %s\n", out_path);
-        remove(tmp);
-    }
-    free(tmp);
+    plugin_write("callstack", out_path, write_profile);
 }
 
 static int cmp_u64(const void *a, const void *b)

@@ -11,40 +11,11 @@
  * Build: cc -O2 -shared -fPIC -o insncount.so insncount.c
  * Use:   qemu-system-arm ... -plugin ./insncount.so,out=FILE
  *
- * Debian's QEMU (7.2) runs plugins but ships no plugin header: the few
- * API calls used are declared here, as that version defines them. */
+ * The plugin API's declarations: qemu_plugin.h. */
 #define _POSIX_C_SOURCE 200809L /* strdup */
 #include <inttypes.h>
-#include <stddef.h>
-#include <stdint.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 
-#define PLUGIN_EXPORT __attribute__((visibility("default")))
-
-typedef uint64_t qemu_plugin_id_t;
-struct qemu_plugin_tb;
-struct qemu_plugin_insn;
-typedef struct qemu_info_t qemu_info_t;
-enum qemu_plugin_op { QEMU_PLUGIN_INLINE_ADD_U64 };
-
-void qemu_plugin_register_vcpu_tb_trans_cb(
-    qemu_plugin_id_t id,
-    void (*cb)(qemu_plugin_id_t id, struct qemu_plugin_tb *tb));
-void qemu_plugin_register_atexit_cb(qemu_plugin_id_t id,
-                                    void (*cb)(qemu_plugin_id_t id,
-                                               void *userdata),
-                                    void *userdata);
-void qemu_plugin_register_vcpu_tb_exec_inline(struct qemu_plugin_tb *tb,
-                                              enum qemu_plugin_op op,
-                                              void *ptr, uint64_t imm);
-size_t qemu_plugin_tb_n_insns(const struct qemu_plugin_tb *tb);
-struct qemu_plugin_insn *qemu_plugin_tb_get_insn(
-    const struct qemu_plugin_tb *tb, size_t idx);
-uint64_t qemu_plugin_insn_vaddr(const struct qemu_plugin_insn *insn);
-
-PLUGIN_EXPORT int qemu_plugin_version = 1;
+#include "qemu_plugin.h"
 
 /* One translation: its start counter and the addresses of its
  * instructions. A block translated again (QEMU flushes and retranslates)
@@ -78,6 +49,13 @@ static void on_translate(qemu_plugin_id_t id, struct qemu_plugin_tb *tb)
                                              &b->runs, 1);
 }
 
+static void write_counts(FILE *f)
+{
+    for (const block *b = blocks; b; b = b->next)
+        for (size_t i = 0; b->runs && i < b->n; i++)
+            fprintf(f, "%" PRIx64 " %" PRIu64 "\n", b->pc[i], b->runs);
+}
+
 static void on_exit(qemu_plugin_id_t id, void *userdata)
 {
     (void)id, (void)userdata;
@@ -85,27 +63,7 @@ static void on_exit(qemu_plugin_id_t id, void *userdata)
         fprintf(stderr, "insncount: out of memory; no profile written\n");
         return;
     }
-    /* Written beside the target and renamed: no half-written profile. */
-    const size_t len = strlen(out_path);
-    char *tmp = malloc(len + 5);
-    if (!tmp)
-        return;
-    memcpy(tmp, out_path, len);
-    memcpy(tmp + len, ".tmp", 5);
-    FILE *f = fopen(tmp, "w");
-    if (!f) {
-        fprintf(stderr, "insncount: cannot write %s\n", tmp);
-        free(tmp);
-        return;
-    }
-    for (const block *b = blocks; b; b = b->next)
-        for (size_t i = 0; b->runs && i < b->n; i++)
-            fprintf(f, "%" PRIx64 " %" PRIu64 "\n", b->pc[i], b->runs);
-    if (fclose(f) != 0 || rename(tmp, out_path) != 0) {
-        fprintf(stderr, "insncount: cannot write %s\n", out_path);
-        remove(tmp);
-    }
-    free(tmp);
+    plugin_write("insncount", out_path, write_counts);
 }
 
 PLUGIN_EXPORT int qemu_plugin_install(qemu_plugin_id_t id,
