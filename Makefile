@@ -27,8 +27,13 @@ WARN := -Wall -Wextra -Werror -Wshadow -Wundef -Wdouble-promotion \
         -Wstrict-prototypes -Wmissing-prototypes -fno-common
 CORE_WARN := $(WARN) -Wconversion -Wno-sign-conversion
 
-CORE_SRC := $(sort $(wildcard core/*.c))
-CORE_HDR := $(sort $(wildcard core/*.h))
+# The core's layer folders, lowest first (docs/architecture.md). Every
+# file includes its headers by name; CORE_INC puts every folder on the path.
+CORE_DIRS := core/fx core/scene core/shapes core/trace core/accel core/frame
+CORE_SRC := $(sort $(wildcard $(addsuffix /*.c,$(CORE_DIRS))))
+CORE_HDR := $(sort $(wildcard $(addsuffix /*.h,$(CORE_DIRS))))
+CORE_INC := $(addprefix -I,$(CORE_DIRS))
+export CORE_INC
 
 include mk/posix.mk
 include mk/test.mk

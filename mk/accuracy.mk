@@ -110,19 +110,19 @@ $(SR_STAMP): sr-force | sr-check
 $(SR_BUILD)/core/%.o: core/%.c $(SR_STAMP)
 	@$(if $(Q),echo "  CC      $< (softref $(SR))")
 	$(Q)mkdir -p $(@D)
-	$(Q)$(SR_CC) $(SR_CFLAGS) $(CORE_WARN) -Icore -MMD -MP -c $< -o $@
+	$(Q)$(SR_CC) $(SR_CFLAGS) $(CORE_WARN) $(CORE_INC) -MMD -MP -c $< -o $@
 
 $(SR_BUILD)/port/baremetal/libc.o: SR_EXTRA := -fno-tree-loop-distribute-patterns
 $(SR_BUILD)/port/baremetal/%.o: port/baremetal/%.c $(SR_STAMP)
 	@$(if $(Q),echo "  CC      $< (softref $(SR))")
 	$(Q)mkdir -p $(@D)
-	$(Q)$(SR_CC) $(SR_CFLAGS) $(SR_EXTRA) $(WARN) -Icore -Iport/baremetal \
+	$(Q)$(SR_CC) $(SR_CFLAGS) $(SR_EXTRA) $(WARN) $(CORE_INC) -Iport/baremetal \
 	    -MMD -MP -c $< -o $@
 
 # The renderer, its libm and main: the only code with floating point.
 $(SR_BUILD)/bench/softref/main.o: $(SR_CONFIG)
 $(SR_BUILD)/bench/softref/%.o $(SR_BUILD)/port/posix/%.o: SR_EXTRA := \
-    $(SR_FLOAT) -fno-builtin -Ibench/softref/include -Icore -Iport/posix \
+    $(SR_FLOAT) -fno-builtin -Ibench/softref/include $(CORE_INC) -Iport/posix \
     -Iport/baremetal -I$(SR_BUILD)
 $(SR_BUILD)/bench/softref/%.o: bench/softref/%.c $(SR_STAMP)
 	@$(if $(Q),echo "  CC      $< (softref $(SR))")

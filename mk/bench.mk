@@ -15,8 +15,8 @@ MIN_BUILD := build/minimal/$(BOARD)
 MIN_ELF := $(MIN_BUILD)/minimal.elf
 MIN_W := $(if $(filter 0,$(WIDTH)),320,$(WIDTH))
 MIN_H := $(if $(filter 0,$(HEIGHT)),240,$(HEIGHT))
-MIN_SRC := bench/minimal/minimal.c core/fx_vec.c core/fx_dir.c core/fx_rsqrt.c \
-    core/fx_sqrt.c core/fx_math.c core/fx_trig.c core/rt_camera.c \
+MIN_SRC := bench/minimal/minimal.c core/fx/fx_vec.c core/fx/fx_dir.c core/fx/fx_rsqrt.c \
+    core/fx/fx_sqrt.c core/fx/fx_math.c core/fx/fx_trig.c core/scene/rt_camera.c \
     $(filter-out port/baremetal/main.c,$(FW_PORT_SRC))
 MIN_OBJ := $(MIN_SRC:%.c=$(MIN_BUILD)/%.o)
 MIN_CFLAGS := -std=c99 $(FW_OPT) -g $(FW_CPU) -ffreestanding \
@@ -32,7 +32,7 @@ $(MIN_BUILD)/port/baremetal/libc.o: FW_EXTRA := -fno-tree-loop-distribute-patter
 $(MIN_BUILD)/%.o: %.c $(MIN_STAMP)
 	@$(if $(Q),echo "  CC      $< (minimal, $(BOARD))")
 	$(Q)mkdir -p $(@D)
-	$(Q)$(FW_CC) $(MIN_CFLAGS) $(FW_EXTRA) $(CORE_WARN) -Icore \
+	$(Q)$(FW_CC) $(MIN_CFLAGS) $(FW_EXTRA) $(CORE_WARN) $(CORE_INC) \
 	    -Iport/baremetal -MMD -MP -c $< -o $@
 
 $(MIN_ELF): $(MIN_OBJ) $(FW_LD) $(MIN_STAMP)

@@ -35,7 +35,7 @@
 # -DRT_MAX_DEPTH=n; port/posix/emit_c.c lists them) gets a host tool
 # built with it and with the build's light limit (RT_MAX_LIGHTS of
 # FW_CAPS or FW_DEFS, else the default), under build/posix-fw*: depth and
-# lights must fit the colour bound together (core/rt_config.h: depth <= 13
+# lights must fit the colour bound together (core/fx/rt_config.h: depth <= 13
 # with 4 lights, 17 with 3, 24 with 2, 41 with 1), in the host tool as in
 # the firmware. For example FW_DEFS="-DRT_MAX_DEPTH=16 -DRT_MAX_LIGHTS=3";
 # a pair that does not fit stops the build before anything is compiled,
@@ -117,7 +117,7 @@ fw_cap_limit = $(lastword $(patsubst -D$1=%,%,$(filter -D$1=%,$(FW_CAPS) \
 
 FW_EFFECTS := $(FW_BUILD)/fw_effects.h
 # DRAFT=0 (the default): main.c never asks for a draft render, so the core
-# is built without draft renders (RT_NO_DRAFT, core/rt_config.h) and links
+# is built without draft renders (RT_NO_DRAFT, core/fx/rt_config.h) and links
 # neither rt_draft.c nor rt_thin.c, with PRUNE=0 as with PRUNE=1.
 FW_DRAFT_OPT := $(if $(filter 0,$(DRAFT)),-DRT_NO_DRAFT)
 FW_CFLAGS := -std=c99 $(FW_OPT) -g $(FW_CPU) -ffreestanding \
@@ -132,9 +132,9 @@ FW_PORT_SRC := port/baremetal/common.c port/baremetal/semihost.c \
     $(FW_OUT_SRC) port/baremetal/libc.c $(FW_BOARD_SRC)
 FW_TABLES_C := $(FW_BUILD)/scene_tables.c
 # The scene parser's files, which a pruned build leaves out.
-FW_PARSER_SRC := core/rt_parse.c core/rt_parse_obj.c core/rt_parse_mesh.c \
-    core/rt_lex.c \
-    core/rt_lex_field.c
+FW_PARSER_SRC := core/scene/rt_parse.c core/scene/rt_parse_obj.c core/scene/rt_parse_mesh.c \
+    core/scene/rt_lex.c \
+    core/scene/rt_lex_field.c
 ifeq ($(FW_APP),bringup)
 FW_SRC := $(FW_PORT_SRC) port/baremetal/bringup.c
 FW_SCENE_OBJ :=
@@ -229,7 +229,7 @@ FW_LOCK := $(if $(shell command -v flock 2>/dev/null),\
 .PHONY: fw-host-tool
 fw-host-tool:
 	$(Q)$(if $(FW_HOST_DEFS),echo '#include "rt_config.h"' | $(CC) \
-	    -std=c99 -fsyntax-only $(FW_HOST_DEFS) -Icore -x c - || { echo \
+	    -std=c99 -fsyntax-only $(FW_HOST_DEFS) $(CORE_INC) -x c - || { echo \
 	    "firmware: the host tool cannot be built with $(FW_HOST_DEFS)" \
 	    "(above; FW_CAPS and FW_DEFS)" >&2; exit 1; })
 	$(Q)mkdir -p $(dir $(FW_FIXTRACE))
@@ -266,7 +266,7 @@ $(FW_EFFECTS): fw-force $(if $(FW_PRUNING),fw-host-tool $(FW_TABLES_C)) \
 	        n=$$(sed -n "s/^#define FW_SCENE_$$what \([0-9]*\)$$/\1/p" \
 	            $(FW_TABLES_C)); \
 	        [ -n "$$lim" ] || lim=$$(sed -n \
-	            "s/^#define $$cap \([0-9]*\)$$/\1/p" core/rt_config.h); \
+	            "s/^#define $$cap \([0-9]*\)$$/\1/p" core/fx/rt_config.h); \
 	        if [ -z "$$n" ] || [ -z "$$lim" ]; then \
 	            echo "firmware: no count for $$cap" >&2; exit 1; fi; \
 	        if [ "$$n" -gt "$$lim" ]; then \
@@ -301,7 +301,7 @@ $(FW_FLAGS_STAMP): fw-force | fw-check-board
 $(FW_BUILD)/core/%.o: core/%.c $(FW_FLAGS_STAMP) $(FW_EFFECTS)
 	@$(if $(Q),echo "  CC      $< ($(BOARD))")
 	$(Q)mkdir -p $(@D)
-	$(Q)$(FW_CC) $(FW_CFLAGS) $(FW_EXTRA) $(CORE_WARN) -Icore -MMD -MP \
+	$(Q)$(FW_CC) $(FW_CFLAGS) $(FW_EXTRA) $(CORE_WARN) $(CORE_INC) -MMD -MP \
 	    -c $< -o $@
 
 # The core's set-up code runs once a render, before the first pixel (the
@@ -316,7 +316,8 @@ $(FW_BUILD)/core/%.o: core/%.c $(FW_FLAGS_STAMP) $(FW_EFFECTS)
 FW_COLD_SRC := rt_tracer rt_dirgrid rt_cutoff rt_sealed rt_scene rt_features \
     fx_trig fx_vec $(if $(filter -mcpu=cortex-m0%,$(FW_CPU)),rt_cull)
 FW_COLD_OPT := $(if $(filter -Os,$(FW_OPT)),,-Os)
-$(FW_COLD_SRC:%=$(FW_BUILD)/core/%.o): FW_EXTRA := $(FW_COLD_OPT)
+$(patsubst %.c,$(FW_BUILD)/%.o,$(foreach n,$(FW_COLD_SRC),$(filter %/$(n).c,$(CORE_SRC)))): \
+    FW_EXTRA := $(FW_COLD_OPT)
 
 # libc.c must not have its loops turned back into calls to itself.
 $(FW_BUILD)/port/baremetal/libc.o: FW_EXTRA := -fno-tree-loop-distribute-patterns
@@ -328,12 +329,12 @@ $(FW_BUILD)/port/baremetal/%.o: port/baremetal/%.c $(FW_FLAGS_STAMP) \
                                 $(FW_EFFECTS)
 	@$(if $(Q),echo "  CC      $< ($(BOARD))")
 	$(Q)mkdir -p $(@D)
-	$(Q)$(FW_CC) $(FW_CFLAGS) $(FW_EXTRA) $(WARN) -Icore -Iport/baremetal \
+	$(Q)$(FW_CC) $(FW_CFLAGS) $(FW_EXTRA) $(WARN) $(CORE_INC) -Iport/baremetal \
 	    -I$(FW_BUILD) -MMD -MP -c $< -o $@
 
 $(FW_BUILD)/scene_tables.o: $(FW_TABLES_C) $(FW_FLAGS_STAMP) $(FW_EFFECTS)
 	@$(if $(Q),echo "  CC      $< ($(BOARD))")
-	$(Q)$(FW_CC) $(FW_CFLAGS) $(CORE_WARN) -Icore -MMD -MP -c $< -o $@
+	$(Q)$(FW_CC) $(FW_CFLAGS) $(CORE_WARN) $(CORE_INC) -MMD -MP -c $< -o $@
 
 $(FW_BUILD)/scene.o: port/baremetal/scene.S $(FW_CONFIG) $(SCENE) \
                      $(FW_FLAGS_STAMP)

@@ -27,7 +27,7 @@ FUZZ_SAN := -fsanitize=address,undefined -fno-sanitize-recover=all \
 # Warnings are shown but not fatal: clang's set differs from gcc's, and the
 # gcc builds already hold the tree to -Werror.
 FUZZ_CFLAGS := -std=c99 -O1 -g -D_POSIX_C_SOURCE=200809L -Wall -Wextra \
-               $(FUZZ_SAN) -Icore -Iport/posix
+               $(FUZZ_SAN) $(CORE_INC) -Iport/posix
 
 FUZZ_SRC := $(CORE_SRC) port/posix/ref_render.c port/posix/ref_shapes.c \
     port/posix/ref_mesh.c

@@ -20,7 +20,7 @@ LINT_JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 # defined, and the tree relies on arithmetic right shifts by design
 # (docs/numerics.md; tests/test_fx.c checks it).
 # -URT_CONFIG_FILE: cppcheck would try that configuration with an empty
-# value, `#include` of nothing (core/rt_config.h includes the named file).
+# value, `#include` of nothing (core/fx/rt_config.h includes the named file).
 CPPCHECK_FLAGS := --enable=warning,portability,performance --std=c99 \
     --inline-suppr --error-exitcode=1 --quiet \
     --suppress=shiftTooManyBitsSigned -URT_CONFIG_FILE \
@@ -132,13 +132,13 @@ $(LINT_FW_CONFIG): $(LINT_FW_MK)
 $(LINT_BUILD)/cppcheck-host.log: lint-force
 	@$(if $(Q),echo "  CPPCHECK core/ port/posix/")
 	$(Q)mkdir -p $(@D)
-	$(Q)$(call lint_run,$(CPPCHECK) $(CPPCHECK_FLAGS) -Icore -Iport/posix \
+	$(Q)$(call lint_run,$(CPPCHECK) $(CPPCHECK_FLAGS) $(CORE_INC) -Iport/posix \
 	    core/ port/posix/)
 
 $(LINT_BUILD)/cppcheck-%.log: lint-force $(LINT_FW_CONFIG)
 	@$(if $(Q),echo "  CPPCHECK port/baremetal/ ($*)")
 	$(Q)$(call lint_run,$(CPPCHECK) $(CPPCHECK_FLAGS) \
-	    $(if $(filter rv32,$*),-D__riscv,-D__arm__) -Icore \
+	    $(if $(filter rv32,$*),-D__riscv,-D__arm__) $(CORE_INC) \
 	    -Iport/baremetal -I$(LINT_BUILD) port/baremetal/)
 
 $(LINT_BUILD)/%.c.log: %.c lint-force
@@ -147,7 +147,7 @@ $(LINT_BUILD)/%.c.log: %.c lint-force
 	$(Q)$(call lint_run,$(CLANG_TIDY) $(LINT_TIDY_FLAGS) \
 	    -checks='$(LINT_TIDY_CHECKS)$(LINT_TIDY_NOT_$<)' \
 	    --config="$(LINT_TIDY_CONFIG)" $< -- -std=c99 \
-	    -D_POSIX_C_SOURCE=200809L -Icore -Iport/posix)
+	    -D_POSIX_C_SOURCE=200809L $(CORE_INC) -Iport/posix)
 
 # port/baremetal/x.c.<arch>.log
 define lint_bm_rule
@@ -158,7 +158,7 @@ $(LINT_BUILD)/%.c.$1.log: %.c lint-force $(LINT_FW_CONFIG)
 	    -checks='$$(LINT_TIDY_CHECKS)$$(LINT_TIDY_NOT_BAREMETAL)$$(strip \
 	    )$$(LINT_TIDY_NOT_$$<)' \
 	    --config="$$(LINT_TIDY_CONFIG)" $$< -- -std=c99 -ffreestanding \
-	    $$(LINT_ARCH_$1) -Icore -Iport/baremetal -I$(LINT_BUILD))
+	    $$(LINT_ARCH_$1) $(CORE_INC) -Iport/baremetal -I$(LINT_BUILD))
 endef
 $(foreach a,arm m33 rv32,$(eval $(call lint_bm_rule,$a)))
 

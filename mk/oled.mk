@@ -15,7 +15,7 @@ GREY4_OBJ := $(HOST_BUILD)/tools/grey4.o $(HOST_CORE_OBJ) $(HOST_PORT_OBJ)
 $(HOST_BUILD)/tools/grey4.o: tools/grey4.c $(HOST_STAMP)
 	@$(if $(Q),echo "  CC      $<")
 	$(Q)mkdir -p $(@D)
-	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) -Icore -Iport/posix -MMD -MP -c $< -o $@
+	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) $(CORE_INC) -Iport/posix -MMD -MP -c $< -o $@
 
 $(GREY4): $(GREY4_OBJ)
 	@$(if $(Q),echo "  LD      $@")

@@ -34,7 +34,8 @@ FIXTRACE := $(HOST_BUILD)/fixtrace
 # which changes only when the flags do, so reusing a directory with other
 # flags (SANITIZE=1, RT_DEFS=...) rebuilds instead of linking stale objects.
 HOST_STAMP := $(HOST_BUILD)/cflags.txt
-$(HOST_STAMP): host-force | $(HOST_BUILD)/core
+$(HOST_STAMP): host-force
+	$(Q)mkdir -p $(@D)
 	$(Q)echo '$(CC) $(HOST_CFLAGS) $(HOST_LDFLAGS)' >$@.tmp; \
 	if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv -f $@.tmp $@; fi
 
@@ -43,19 +44,20 @@ host-force:
 
 $(HOST_ALL_OBJ): $(HOST_STAMP)
 
-$(HOST_BUILD)/core/%.o: core/%.c | $(HOST_BUILD)/core
+$(HOST_BUILD)/core/%.o: core/%.c
 	@$(if $(Q),echo "  CC      $<")
-	$(Q)$(CC) $(HOST_CFLAGS) $(CORE_WARN) -Icore -MMD -MP -c $< -o $@
+	$(Q)mkdir -p $(@D)
+	$(Q)$(CC) $(HOST_CFLAGS) $(CORE_WARN) $(CORE_INC) -MMD -MP -c $< -o $@
 
 $(HOST_BUILD)/port/posix/%.o: port/posix/%.c | $(HOST_BUILD)/port/posix
 	@$(if $(Q),echo "  CC      $<")
-	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) -Icore -Iport/posix -MMD -MP -c $< -o $@
+	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) $(CORE_INC) -Iport/posix -MMD -MP -c $< -o $@
 
 $(FIXTRACE): $(HOST_ALL_OBJ)
 	@$(if $(Q),echo "  LD      $@")
 	$(Q)$(CC) $(HOST_LDFLAGS) $^ -o $@ $(HOST_LIBS)
 
-$(HOST_BUILD)/core $(HOST_BUILD)/port/posix:
+$(HOST_BUILD)/port/posix:
 	$(Q)mkdir -p $@
 
 -include $(HOST_ALL_OBJ:.o=.d)
@@ -70,7 +72,7 @@ run: $(FIXTRACE)
 MKMODEL := $(HOST_BUILD)/mkmodel
 $(MKMODEL): tools/mkmodel.c $(HOST_CORE_OBJ) $(HOST_PORT_OBJ) $(HOST_STAMP)
 	@$(if $(Q),echo "  LD      $@")
-	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) -Icore -Iport/posix $(HOST_LDFLAGS) \
+	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) $(CORE_INC) -Iport/posix $(HOST_LDFLAGS) \
 	    tools/mkmodel.c $(HOST_PORT_OBJ) $(HOST_CORE_OBJ) -o $@ $(HOST_LIBS)
 
 .PHONY: models

@@ -9,7 +9,7 @@ TEST_HARNESS_OBJ := $(HOST_BUILD)/tests/harness.o
 
 $(HOST_BUILD)/tests/%.o: tests/%.c $(HOST_STAMP) | $(HOST_BUILD)/tests
 	@$(if $(Q),echo "  CC      $<")
-	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) -Wno-missing-prototypes -Icore \
+	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) -Wno-missing-prototypes $(CORE_INC) \
 	    -Iport/posix -Itests -MMD -MP -c $< -o $@
 
 $(HOST_BUILD)/tests/test_%: $(HOST_BUILD)/tests/test_%.o $(TEST_HARNESS_OBJ) \
@@ -25,7 +25,7 @@ $(HOST_BUILD)/tests/test_stability: $(STAB_OBJ)
 $(HOST_BUILD)/tests/stability/%.o: tests/stability/%.c $(HOST_STAMP) \
                                    | $(HOST_BUILD)/tests/stability
 	@$(if $(Q),echo "  CC      $<")
-	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) -Wno-missing-prototypes -Icore \
+	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) -Wno-missing-prototypes $(CORE_INC) \
 	    -Iport/posix -Itests -Itests/stability -MMD -MP -c $< -o $@
 
 $(HOST_BUILD)/tests $(HOST_BUILD)/tests/stability:
@@ -50,7 +50,7 @@ RANDJUDGE := $(HOST_BUILD)/tests/randjudge
 $(RANDJUDGE): tests/randjudge.c $(HOST_PORT_OBJ) $(HOST_CORE_OBJ) \
               | $(HOST_BUILD)/tests
 	@$(if $(Q),echo "  LD      $@")
-	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) -Iport/posix -Icore $(HOST_LDFLAGS) \
+	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) -Iport/posix $(CORE_INC) $(HOST_LDFLAGS) \
 	    $< $(HOST_PORT_OBJ) $(HOST_CORE_OBJ) -o $@ $(HOST_LIBS)
 
 # The POV-Ray translator of tests/suite_povray.sh: reads a scene with the
@@ -58,7 +58,7 @@ $(RANDJUDGE): tests/randjudge.c $(HOST_PORT_OBJ) $(HOST_CORE_OBJ) \
 SCENE2POV := $(HOST_BUILD)/tests/scene2pov
 $(SCENE2POV): tests/scene2pov.c $(HOST_CORE_OBJ) | $(HOST_BUILD)/tests
 	@$(if $(Q),echo "  LD      $@")
-	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) -Icore $(HOST_LDFLAGS) $< \
+	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) $(CORE_INC) $(HOST_LDFLAGS) $< \
 	    $(HOST_CORE_OBJ) -o $@ -lm
 
 .PHONY: test test-build test-quick random-test

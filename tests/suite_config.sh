@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# The configuration header and the capacity check (core/rt_config.h,
-# core/rt_scene.h, docs/embedding.md "Configuration"):
+# The configuration header and the capacity check (core/fx/rt_config.h,
+# core/scene/rt_scene.h, docs/embedding.md "Configuration"):
 # - an application compiled with other capacities than the core does not
 #   link, and the linker names the application's capacities (the case of
 #   the reported case: docs/examples/embed_example.c with -DRT_MAX_OBJECTS=16
@@ -12,12 +12,14 @@
 #   -DRT_CONFIG_FILE, as fixtrace_conf.h found on the include path, or
 #   with -DRT_USE_CONF_FILE; a fixtrace_conf.h that only the application
 #   sees is caught too; and clang finds fixtrace_conf.h as GCC does;
-# - the colour bound (core/rt_config.h): the core compiles at the deepest
+# - the colour bound (core/fx/rt_config.h): the core compiles at the deepest
 #   RT_MAX_DEPTH each light count allows and refuses one level more, with
 #   a message that gives the limits; rt_config.h and docs/embedding.md
 #   state the limits the compiler enforces.
 set -u
 cd "$(dirname "$0")/.."
+# -I for every layer folder of core/ (the Makefile exports the same).
+CORE_INC=${CORE_INC:-$(for d in core/*/; do printf -- '-I%s ' "${d%/}"; done)}
 CC=${CC:-gcc}
 pass=0 fail=0
 tmp=$(mktemp -d)
@@ -56,14 +58,14 @@ printf '%s\n' '/* micro:bit capacities */' '#define RT_MAX_OBJECTS 16' \
     >"$tmp/conf/fixtrace_conf.h"
 cp "$tmp/conf/fixtrace_conf.h" "$tmp/named/small_conf.h"
 
-# core NAME FLAGS...: compiles core/*.c into $tmp/NAME/ (an archive).
+# core NAME FLAGS...: compiles core/*/*.c into $tmp/NAME/ (an archive).
 core() {
     local name=$1 f
     shift
     mkdir -p "$tmp/$name"
-    for f in core/*.c; do
+    for f in core/*/*.c; do
         # shellcheck disable=SC2086
-        $CC $CFLAGS "$@" -Icore -c "$f" -o "$tmp/$name/$(basename "$f" .c).o" \
+        $CC $CFLAGS "$@" $CORE_INC -c "$f" -o "$tmp/$name/$(basename "$f" .c).o" \
             2>>"$tmp/$name.err" || return 1
     done
     ar rcs "$tmp/$name/libcore.a" "$tmp/$name"/*.o
@@ -76,7 +78,7 @@ app() {
     shift
     rm -f "$tmp/app"
     # shellcheck disable=SC2086
-    $CC $CFLAGS "$@" -Icore -Idocs/examples "$tmp/app.c" \
+    $CC $CFLAGS "$@" $CORE_INC -Idocs/examples "$tmp/app.c" \
         "$tmp/$name/libcore.a" -o "$tmp/app" >"$tmp/link.log" 2>&1
 }
 
@@ -136,7 +138,7 @@ app found -I"$tmp/conf" && runs 3264 "fixtrace_conf.h" ||
 app found -DRT_USE_CONF_FILE -I"$tmp/conf" && runs 3264 "RT_USE_CONF_FILE" ||
     bad "RT_USE_CONF_FILE: $(head -c 400 "$tmp/link.log")"
 # The configuration file and -D options may not disagree.
-if $CC $CFLAGS -Icore -I"$tmp/conf" -DRT_MAX_OBJECTS=8 -c core/rt_scene.c \
+if $CC $CFLAGS $CORE_INC -I"$tmp/conf" -DRT_MAX_OBJECTS=8 -c core/scene/rt_scene.c \
     -o "$tmp/x.o" 2>"$tmp/err"; then
     bad "-DRT_MAX_OBJECTS=8 and fixtrace_conf.h's 16 compiled without a word"
 else
@@ -148,7 +150,7 @@ fi
 if command -v clang >/dev/null 2>&1; then
     printf '#include "rt_scene.h"\n#if RT_MAX_OBJECTS != 16\n#error not found\n#endif\nint x;\n' \
         >"$tmp/c.c"
-    if clang -std=c99 -pedantic -Wall -Wextra -Werror -Wundef -Icore \
+    if clang -std=c99 -pedantic -Wall -Wextra -Werror -Wundef $CORE_INC \
         -I"$tmp/conf" -c "$tmp/c.c" -o "$tmp/c.o" 2>"$tmp/err"; then
         ok
     else
@@ -175,7 +177,7 @@ for l in 4 3 2 1 10; do
     for more in "-DRT_MAX_LIGHTS=$l -DRT_MAX_DEPTH=$((d + 1))" \
                 "-DRT_MAX_LIGHTS=$((l + 1)) -DRT_MAX_DEPTH=$d"; do
         # shellcheck disable=SC2086
-        if echo '#include "rt_scene.h"' | $CC $CFLAGS $more -Icore -x c - \
+        if echo '#include "rt_scene.h"' | $CC $CFLAGS $more $CORE_INC -x c - \
             -fsyntax-only 2>"$tmp/err"; then
             bad "$more compiled: beyond the colour bound"
         else
@@ -189,8 +191,8 @@ done
 [ "$limits" = "13 with 4, 17 with 3, 24 with 2, 41 with 1" ] && ok ||
     bad "the computed limits are '$limits'"
 flat() { sed 's/^ *\* \{0,1\}//' "$1" | tr '\n' ' ' | tr -s ' '; }
-flat core/rt_config.h | grep -q "depth is at most 13 with 4 lights, 17 with 3, 24 with 2 and 41 with 1" &&
-    ok || bad "core/rt_config.h does not state the depth limits at RT_MAX_DEPTH"
+flat core/fx/rt_config.h | grep -q "depth is at most 13 with 4 lights, 17 with 3, 24 with 2 and 41 with 1" &&
+    ok || bad "core/fx/rt_config.h does not state the depth limits at RT_MAX_DEPTH"
 flat docs/embedding.md | grep -q "at most 13 with 4 lights (the defaults), 17 with 3, 24 with 2 and 41 with 1, and at the default depth of 5 .RT_MAX_LIGHTS. is at most 10" &&
     ok || bad "docs/embedding.md does not state the depth and light limits"
 

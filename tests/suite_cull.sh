@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Culling of camera rays (core/rt_cull.c) and of shadow and secondary
-# rays (the direction grids, core/rt_dirgrid.c) must never change a pixel:
+# Culling of camera rays (core/accel/rt_cull.c) and of shadow and secondary
+# rays (the direction grids, core/accel/rt_dirgrid.c) must never change a pixel:
 # random scenes with tiny, huge, near and far objects, reflective and
 # glass materials, random cameras and one to three lights anywhere
 # (inside objects too, and in closed glass in view) render the same bytes

@@ -20,6 +20,8 @@
 # The figures the pages quote are tests/suite_figures.sh's.
 set -u
 cd "$(dirname "$0")/.."
+# -I for every layer folder of core/ (the Makefile exports the same).
+CORE_INC=${CORE_INC:-$(for d in core/*/; do printf -- '-I%s ' "${d%/}"; done)}
 FT=${FIXTRACE:-build/posix/fixtrace}
 CC=${CC:-gcc}
 pass=0 fail=0
@@ -41,7 +43,7 @@ STRICT="-std=c99 -Wall -Wextra -Werror -Wshadow -Wundef -Wdouble-promotion
 # --- docs/examples/*.c compile freestanding -------------------------------
 for src in docs/examples/*.c; do
     # shellcheck disable=SC2086
-    if $CC $STRICT -ffreestanding -nostdlib -Icore -c "$src" \
+    if $CC $STRICT -ffreestanding -nostdlib $CORE_INC -c "$src" \
         -o "$tmp/ex.o" 2>"$tmp/err"; then
         ok
     else
@@ -50,7 +52,7 @@ for src in docs/examples/*.c; do
     if command -v arm-none-eabi-gcc >/dev/null 2>&1; then
         # shellcheck disable=SC2086
         if arm-none-eabi-gcc $STRICT -mcpu=cortex-m0 -mthumb -Os \
-            -ffreestanding -nostdlib -Icore -c "$src" -o "$tmp/ex_m0.o" \
+            -ffreestanding -nostdlib $CORE_INC -c "$src" -o "$tmp/ex_m0.o" \
             2>"$tmp/err"; then
             ok
         else
@@ -76,7 +78,7 @@ for target in "arm-none-eabi-gcc -mcpu=cortex-m0 -mthumb" \
         continue
     fi
     # shellcheck disable=SC2086
-    if $target $STRICT -O2 -ffreestanding -Icore -Iport/baremetal \
+    if $target $STRICT -O2 -ffreestanding $CORE_INC -Iport/baremetal \
         -c "$tmp/board_t.c" -o "$tmp/board_t.o" 2>"$tmp/err"; then
         ok
     else
@@ -171,7 +173,7 @@ int main(int argc, char **argv)
 }
 EOF
 # shellcheck disable=SC2046
-if $CC -std=c99 -O1 -Icore -Idocs/examples "$tmp/fake_lcd.c" core/*.c \
+if $CC -std=c99 -O1 $CORE_INC -Idocs/examples "$tmp/fake_lcd.c" core/*/*.c \
     -o "$tmp/fake_lcd" 2>"$tmp/err"; then
     ok
     if "$tmp/fake_lcd" "$tmp/embed.scene" "$tmp/lcd.ppm" 2>"$tmp/err"; then

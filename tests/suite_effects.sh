@@ -12,6 +12,8 @@
 #   flags a build can get (below), for the host and for the boards.
 set -u
 cd "$(dirname "$0")/.."
+# -I for every layer folder of core/ (the Makefile exports the same).
+CORE_INC=${CORE_INC:-$(for d in core/*/; do printf -- '-I%s ' "${d%/}"; done)}
 FT=${FIXTRACE:-build/posix/fixtrace}
 MAKE=${MAKE:-make}
 pass=0 fail=0 skip=0
@@ -99,12 +101,12 @@ fi
 # with the flags mk/firmware.mk gives the core. Compile only, JOBS (2) at
 # a time. A file whose preprocessed text is the same in two
 # configurations compiles the same, so each distinct text is compiled
-# once. The flag names come from the one list, core/rt_features.h; the
-# shapes are the names rt_kind has too (core/rt_scene.h).
-names=$(sed -nE 's/^ *X\(([A-Z]+), .*/\1/p' core/rt_features.h)
+# once. The flag names come from the one list, core/scene/rt_features.h; the
+# shapes are the names rt_kind has too (core/scene/rt_scene.h).
+names=$(sed -nE 's/^ *X\(([A-Z]+), .*/\1/p' core/scene/rt_features.h)
 shapes="" effects=""
 for n in $names; do
-    if grep -qE "^ *RT_$n( = 0)?,$" core/rt_scene.h; then
+    if grep -qE "^ *RT_$n( = 0)?,$" core/scene/rt_scene.h; then
         shapes="$shapes $n"
     else
         effects="$effects $n"
@@ -153,9 +155,9 @@ for c in "${!compilers[@]}"; do
     for k in "${!configs[@]}"; do
         (
             cmd=${compilers[$c]#*|}
-            for f in core/*.c; do
+            for f in core/*/*.c; do
                 # shellcheck disable=SC2086
-                h=$($cmd ${configs[$k]} -Icore -E "$f" 2>&1 | md5sum)
+                h=$($cmd ${configs[$k]} $CORE_INC -E "$f" 2>&1 | md5sum)
                 echo "$f ${h%% *}"
             done >"$tmp/cfg/$c.$k"
         ) &
@@ -172,7 +174,7 @@ for c in "${!compilers[@]}"; do
             seen[$c.$h]=1
             (
                 # shellcheck disable=SC2086
-                ${compilers[$c]#*|} ${configs[$k]} -Icore -c "$f" \
+                ${compilers[$c]#*|} ${configs[$k]} $CORE_INC -c "$f" \
                     -o "$tmp/cc/$c.$h.o" >"$tmp/cc/$c.$h.log" 2>&1
                 echo $? >"$tmp/cc/$c.$h.rc"
             ) &

@@ -21,12 +21,14 @@
 # - following from the sources: sizes from the headers (sizeof(rt_scene)
 #   and its formula, on the host and on a Cortex-M0), the scenes (objects,
 #   depth, text size), the board files and linker scripts, and the
-#   defaults of core/rt_config.h.
+#   defaults of core/fx/rt_config.h.
 # Figures nothing can measure again cheaply (QEMU runs) are checked only
 # against their table: regenerate the table with its tool, and this names
 # every page that quotes it.
 set -u
 cd "$(dirname "$0")/.."
+# -I for every layer folder of core/ (the Makefile exports the same).
+CORE_INC=${CORE_INC:-$(for d in core/*/; do printf -- '-I%s ' "${d%/}"; done)}
 FT=${FIXTRACE:-build/posix/fixtrace}
 CC=${CC:-gcc}
 pass=0 fail=0
@@ -51,7 +53,7 @@ if [ ! -x "$FT" ]; then
     exit 1
 fi
 
-# --- Sizes from the headers, the board files and core/rt_config.h -----------
+# --- Sizes from the headers, the board files and core/fx/rt_config.h -----------
 # docs/embedding.md states sizeof(rt_scene) for the default capacities and
 # the micro:bit build's (mk/boards/microbit.mk's FW_CAPS, read from there),
 # the formula behind them and the bytes per capacity; all must match the
@@ -74,7 +76,7 @@ int main(void)
 EOF
 probe() { # capacities... -> "sizeof materials lights objects width name"
     # shellcheck disable=SC2068
-    $CC -std=c99 -Icore $@ "$tmp/size.c" -o "$tmp/size" 2>"$tmp/err" &&
+    $CC -std=c99 $CORE_INC $@ "$tmp/size.c" -o "$tmp/size" 2>"$tmp/err" &&
         "$tmp/size"
 }
 th() { echo "$1" | sed -E ':a; s/^([0-9]+)([0-9]{3})/\1,\2/; ta'; }
@@ -87,7 +89,7 @@ host_def=$scene_def host_mb=$scene_mb
 sz32() { # capacities... -> sizeof(rt_scene) on a Cortex-M0, or nothing
     printf '#include "rt_scene.h"\nchar probe_m0[sizeof(rt_scene)];\n' >"$tmp/sz32.c"
     # shellcheck disable=SC2068
-    arm-none-eabi-gcc -std=c99 -mcpu=cortex-m0 -mthumb -Icore $@ \
+    arm-none-eabi-gcc -std=c99 -mcpu=cortex-m0 -mthumb $CORE_INC $@ \
         -c "$tmp/sz32.c" -o "$tmp/sz32.o" 2>>"$tmp/err" || return 0
     local hex
     hex=$(arm-none-eabi-nm -S "$tmp/sz32.o" | awk '$4 == "probe_m0" { print $2 }')
@@ -131,8 +133,8 @@ else
 fi
 
 # Defaults the pages give as `RT_NAME` (N), and the configuration table of
-# docs/embedding.md (| `RT_NAME` | N | ...), are core/rt_config.h's.
-cfg_default() { sed -nE "s/^#define $1 ([0-9]+)\$/\\1/p" core/rt_config.h | head -n 1; }
+# docs/embedding.md (| `RT_NAME` | N | ...), are core/fx/rt_config.h's.
+cfg_default() { sed -nE "s/^#define $1 ([0-9]+)\$/\\1/p" core/fx/rt_config.h | head -n 1; }
 for md in README.md docs/*.md port/baremetal/README.md; do
     { tr '\n' ' ' <"$md" | tr -s ' ' | grep -oE '`RT_[A-Z_]+` \([0-9,]+\)' | sed -E 's/`(RT_[A-Z_]+)` \(([0-9,]+)\)/\1 \2/'
       [ "$md" = docs/embedding.md ] && sed -nE 's/^\| `(RT_[A-Z_]+)` \| ([0-9,]+) \|.*/\1 \2/p' "$md"; } |
@@ -140,7 +142,7 @@ for md in README.md docs/*.md port/baremetal/README.md; do
             want=$(cfg_default "$name")
             [ -n "$want" ] || continue
             [ "$(echo "$v" | tr -d ,)" = "$want" ] && echo ok ||
-                echo "FAILED: $md gives $name as $v, core/rt_config.h's default is $want"
+                echo "FAILED: $md gives $name as $v, core/fx/rt_config.h's default is $want"
         done
 done >"$tmp/cfgq"
 grep -v '^ok$' "$tmp/cfgq"

@@ -21,7 +21,7 @@
 # - the host tool that parses the scene is built with the settings of
 #   FW_DEFS and FW_CAPS that change the parsed scene (RT_MAX_DEPTH,
 #   RT_UNIT_BITS) and with the light limit the depth must fit
-#   (core/rt_config.h's colour bound): 16 deep with 2 lights, and 16-bit
+#   (core/fx/rt_config.h's colour bound): 16 deep with 2 lights, and 16-bit
 #   unit vectors, render the host's bytes for those settings; 16 deep with
 #   the default 4 lights stops with rt_config.h's message before
 #   anything is compiled; the micro:bit's light limit reaches its host
@@ -154,7 +154,7 @@ syms pruned | grep -qE '^rt_mesh_' &&
     bad "the pruned firmware links the mesh code:" \
         "$(syms pruned | grep -E '^rt_mesh_' | tr '\n' ' ')" || ok
 # DRAFT=0 (the default), pruned or not: no draft render code
-# (core/rt_draft.c, rt_thin.c; RT_NO_DRAFT) but rt_draft_sign_hit, which
+# (core/frame/rt_draft.c, rt_thin.c; RT_NO_DRAFT) but rt_draft_sign_hit, which
 # rt_shade.c still calls and which is then empty (at most 4 bytes). Their
 # static functions are reached only through these, so the names tell. A
 # DRAFT=64 firmware links them.
@@ -171,7 +171,7 @@ done
     draft_code draft | grep -q 'rt_draft_render .*rt_thin_' && ok ||
     bad "the DRAFT=64 firmware: status $(cat "$tmp/draft.rc"), draft code" \
         "'$(draft_code draft)' $(tail -n 3 "$tmp/draft.log")"
-# rt_parse is linked as rt_parse_cfg_o<N>_m<N>_l<N> (core/rt_scene.h).
+# rt_parse is linked as rt_parse_cfg_o<N>_m<N>_l<N> (core/scene/rt_scene.h).
 syms full | grep -qE '^rt_parse(_cfg_[a-z0-9_]+)?$' &&
     syms full | grep -qx fw_scene_text && ok ||
     bad "the full firmware does not parse the scene text on the device"

@@ -6,6 +6,8 @@
 # its own). A check that cannot run is reported as skipped, not passed.
 set -u
 cd "$(dirname "$0")/.."
+# -I for every layer folder of core/ (the Makefile exports the same).
+CORE_INC=${CORE_INC:-$(for d in core/*/; do printf -- '-I%s ' "${d%/}"; done)}
 pass=0 fail=0 skip=0
 ok() { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAILED: $*"; }
@@ -14,7 +16,7 @@ trap 'rm -rf "$tmp"' EXIT
 
 # 1. Source: no floating-point types, allocation, libm or stdio in core/.
 hits=$(grep -nE '\b(float|double)\b|\b(malloc|calloc|realloc|free)\s*\(|<(math|stdio|stdlib)\.h>' \
-       core/*.c core/*.h | grep -vE ':\s*(/\*|\*)' || true)
+       core/*/*.c core/*/*.h | grep -vE ':\s*(/\*|\*)' || true)
 [ -z "$hits" ] && ok || bad "core sources use float/double/malloc/libm/stdio:
 $hits"
 
@@ -26,9 +28,9 @@ undefined() { # $1 = tool prefix, $2 = object dir, $3 = allowed regex
 }
 mkdir -p "$tmp/x86"
 okb=1
-for f in core/*.c; do
+for f in core/*/*.c; do
     gcc -std=c99 -ffreestanding -nostdlib -mgeneral-regs-only -O2 -Wall \
-        -Wextra -Werror -Icore -c "$f" -o "$tmp/x86/$(basename "$f" .c).o" \
+        -Wextra -Werror $CORE_INC -c "$f" -o "$tmp/x86/$(basename "$f" .c).o" \
         || { bad "$f does not build freestanding with -mgeneral-regs-only"; okb=0; }
 done
 [ $okb = 1 ] && ok
@@ -43,9 +45,9 @@ undef=$(undefined "" "$tmp/x86" 'memcpy|memset|memmove')
 # as __aeabi_lmul / __aeabi_uldivmod are fine).
 if command -v arm-none-eabi-gcc >/dev/null; then
     mkdir -p "$tmp/m0"
-    for f in core/*.c; do
+    for f in core/*/*.c; do
         arm-none-eabi-gcc -std=c99 -mcpu=cortex-m0 -mthumb -ffreestanding \
-            -nostdlib -O2 -Icore -c "$f" -o "$tmp/m0/$(basename "$f" .c).o" ||
+            -nostdlib -O2 $CORE_INC -c "$f" -o "$tmp/m0/$(basename "$f" .c).o" ||
             bad "$f does not build for Cortex-M0"
     done
     refs=$(undefined arm-none-eabi- "$tmp/m0" 'memcpy|memset|memmove')

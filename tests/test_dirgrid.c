@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * The direction grids (core/rt_dirgrid.c) must be conservative: any object
+ * The direction grids (core/accel/rt_dirgrid.c) must be conservative: any object
  * a shadow ray or a ray leaving an object hits must be listed in the ray's
  * cell. Random lights and shapes from tiny to huge, and rays aimed to
  * graze each object's bounding sphere, where a too-narrow cone would show

@@ -292,14 +292,14 @@ seen in reflections and through glass. A single full-contrast flipped
 pixel caps a ${W}x${H} image near 52 dB. Those decisions are taken on
 unit vectors (ray directions, normals, directions to lights), whose
 angle error grows with every unit a ray travels. So unit vectors carry
-\`RT_UNIT_BITS\` fraction bits (core/fx_dir.h, Q2.30 by default) while
+\`RT_UNIT_BITS\` fraction bits (core/fx/fx_dir.h, Q2.30 by default) while
 positions, distances and colours stay Q16.16; the bounding tests near a
 silhouette, the quads' edges and the frame cylinders and cones are
 solved in work at that precision too (docs/numerics.md).
 
 ## Precision of unit vectors
 
-\`RT_UNIT_BITS\` (16..30, core/rt_config.h) sets those fraction bits at
+\`RT_UNIT_BITS\` (16..30, core/fx/rt_config.h) sets those fraction bits at
 compile time. It is a measuring device more than a knob: every bit count
 does the same 64-bit products, so fewer bits buy no speed. The default's
 30 bits cost ${r_16}x the instructions of 16 bits on the M3 (${r_16_m0}x on

@@ -2,7 +2,7 @@
 /*
  * grey4: what a 4-bit grey panel shows for an RGB888 image, as the host
  * sees it. Reads a P6 PPM (for example `fixtrace -W 128 -H 64` output),
- * maps every pixel to a level 0..15 with rt_grey4() (core/rt_grey.c, the
+ * maps every pixel to a level 0..15 with rt_grey4() (core/frame/rt_grey.c, the
  * same function the LM3S6965 firmware sends to its OLED) and writes a P6
  * PPM in which level L is the grey 17 * L, each pixel drawn SCALE x SCALE.
  *
@@ -23,7 +23,7 @@
 static int usage(void)
 {
     fprintf(stderr, "usage: grey4 [-s SCALE] IN.ppm OUT.ppm\n"
-                    "  maps IN to 16 grey levels (core/rt_grey.h) and writes"
+                    "  maps IN to 16 grey levels (core/frame/rt_grey.h) and writes"
                     " them as greys 17 * L,\n  each pixel SCALE x SCALE "
                     "(1..16, default 1)\n");
     return 2;

@@ -6,7 +6,7 @@
  *
  * Output: semihosting (out_semihost.c) for the image and the figures, as on
  * every board, and each row on the panel: port_display_row() maps it to
- * grey levels with rt_grey4() (core/rt_grey.c, the mapping the host's
+ * grey levels with rt_grey4() (core/frame/rt_grey.c, the mapping the host's
  * tools/grey4.c uses too) and sends it as it comes, two pixels a byte;
  * there is no frame buffer, only one panel row of 64 bytes on the stack.
  * When the run is done the firmware says so and keeps the picture up:

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * mesh_build: the host's side of a mesh (core/rt_mesh.h): the bounding
+ * mesh_build: the host's side of a mesh (core/shapes/rt_mesh.h): the bounding
  * volume hierarchy over a triangle list, built with the surface-area
  * heuristic, and the one allocation that holds the finished rt_mesh.
  */

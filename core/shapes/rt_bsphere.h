@@ -2,7 +2,7 @@
 /*
  * rt_bsphere: the bounding-sphere test every shape but the quad starts
  * with (bsphere), and the small exact products it is built from. Static
- * inline: included once, by core/rt_intersect.c, where each shape's test
+ * inline: included once, by core/shapes/rt_intersect.c, where each shape's test
  * inlines it (the call and its nine arguments cost more than the common
  * rejection itself).
  */

@@ -7,6 +7,7 @@
 #ifndef RT_ANTIALIAS_H
 #define RT_ANTIALIAS_H
 
+#include "rt_render.h"
 #include "rt_trace.h"
 
 /* One pixel row's camera rays: what they may hit (rt_cull), and where. */

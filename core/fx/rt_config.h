@@ -89,7 +89,7 @@
 #endif
 
 /* Fraction bits of unit vectors: ray directions, normals, directions to
- * lights and the camera frame (core/fx_dir.h), 16..30. Positions,
+ * lights and the camera frame (core/fx/fx_dir.h), 16..30. Positions,
  * distances and colours are Q16.16 whatever this says. 30 (Q2.30) is the
  * default: the image is then within rounding of float32 at a few percent
  * of the cost of 16; docs/accuracy.md measures each setting. */

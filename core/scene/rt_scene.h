@@ -180,7 +180,7 @@ void rt_scene_init(rt_scene *s);
  * states what a mesh must hold). */
 rt_status rt_object_prepare(rt_object *o);
 
-/* A mesh object's part of rt_object_prepare (core/rt_mesh_check.c):
+/* A mesh object's part of rt_object_prepare (core/shapes/rt_mesh_check.c):
  * checks its tables (indices in range, a hierarchy that covers every
  * triangle once within RT_MESH_DEPTH levels, boxes that hold what lies
  * below them) and derives its bounding sphere. Returns RT_OK, or

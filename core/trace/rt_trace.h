@@ -8,7 +8,7 @@
 #ifndef RT_TRACE_H
 #define RT_TRACE_H
 
-#include "rt_render.h"
+#include "rt_options.h"
 #include "rt_cull.h"
 #include "rt_dirgrid.h"
 #include "rt_sealed.h"

@@ -3,7 +3,7 @@
  * rt_features: what a scene needs and what this build can render, as
  * RT_FEAT_* sets over the one list in rt_features.h.
  */
-#include "rt_render.h"
+#include "rt_options.h"
 
 /* A shape's bit follows from its kind: the list keeps rt_kind's order. */
 typedef char kinds_in_list_order[
