@@ -414,7 +414,7 @@ static void test_unit_vectors(void)
 }
 
 /* A unit-vector component: anywhere within 2^30 + 2^16, often at the
- * edges of rt_dot3_unit_soft's range and of its 16-bit halves. */
+ * edges of fx_dot3_small_call's range and of its 16-bit halves. */
 static int32_t unit_component(void)
 {
     const int64_t lim = ((int64_t)1 << 30) + (1 << 16);
@@ -449,15 +449,15 @@ static void test_soft_dots(void)
         }
         const int64_t ab = (int64_t)a[0] * b[0] + (int64_t)a[1] * b[1] +
                            (int64_t)a[2] * b[2];
-        bad_unit += rt_dot3_unit_soft(a[0], a[1], a[2], b[0], b[1], b[2]) !=
+        bad_unit += fx_dot3_small_call(a[0], a[1], a[2], b[0], b[1], b[2]) !=
                     ab;
         /* Any int32 values: the sum of three products may wrap int64 at
-         * the extremes, as rt_dot3_soft's contract excludes; compare
+         * the extremes, as fx_dot3_wide_soft's contract excludes; compare
          * modulo 2^64. */
         const uint64_t cd = (uint64_t)((int64_t)c[0] * d[0]) +
                             (uint64_t)((int64_t)c[1] * d[1]) +
                             (uint64_t)((int64_t)c[2] * d[2]);
-        bad_any += (uint64_t)rt_dot3_soft(c[0], c[1], c[2], d[0], d[1],
+        bad_any += (uint64_t)fx_dot3_wide_soft(c[0], c[1], c[2], d[0], d[1],
                                           d[2]) != cd;
         /* Any int32 values, INT32_MIN included: at most 3 2^62. */
         int32_t e[3];

@@ -21,6 +21,8 @@
 #include <stdint.h>
 
 #include "rt_config.h"
+#include "fx_cpu.h"
+#include "fx_mul64_soft.h"
 
 typedef int32_t fx_t;
 
@@ -50,81 +52,6 @@ static inline fx_t fx_sat64(int64_t v)
 #else
 #define FX_HAVE_OVERFLOW_BUILTINS 0
 #endif
-
-/* 1 where the core has no 32x32->64 multiply (Cortex-M0, M0+ and M1:
- * ARMv6-M). There the compiler calls a 64x64 library multiply for every
- * 64-bit product, about 45 instructions with the call; the products
- * below, from four 16x16 multiplies, give the same bits in about 26 (as
- * a call). Elsewhere they are the one-instruction product. */
-#if defined(__ARM_ARCH_6M__)
-#define FX_SOFT_MUL64 1
-#else
-#define FX_SOFT_MUL64 0
-#endif
-
-/* 1 where the core has no count-leading-zeros instruction: ARMv6-M, and
- * RISC-V without the Zbb extension (the rv32 board's RV32IMAC). There
- * __builtin_clz and __builtin_ctz are library calls of about 20
- * instructions; fx_clz32 and fx_ctz32 use a multiply and a table. */
-#if defined(__ARM_ARCH_6M__) || (defined(__riscv) && !defined(__riscv_zbb))
-#define FX_SOFT_CLZ 1
-#else
-#define FX_SOFT_CLZ 0
-#endif
-
-/* hi 2^32 + lo, as the register pair it is. */
-static inline uint64_t fx_pair64(uint32_t hi, uint32_t lo)
-{
-    return ((uint64_t)hi << 32) | lo;
-}
-
-/* m 2^16 for a signed 32-bit m, mod 2^64: its two words by two shifts
- * (a 64-bit shift of a widened m costs twice that on the M0). */
-static inline uint64_t fx_mid64(int32_t m)
-{
-    return fx_pair64((uint32_t)(m >> 16), (uint32_t)m << 16);
-}
-
-/* a * b, exact, from 16-bit halves (the low halves unsigned): each of the
- * four partial products fits 32 bits, and the two middle ones are added
- * to the pair hh:ll by adds and adcs (#17: 24 instructions as a call on
- * the M0, 41 with a 64-bit middle sum). The sum is the product mod
- * 2^64, which fits int64. */
-static inline int64_t fx_imul64_soft(int32_t a, int32_t b)
-{
-    int32_t ah = a >> 16, bh = b >> 16;
-    uint32_t al = (uint32_t)a & 0xFFFFu, bl = (uint32_t)b & 0xFFFFu;
-    uint64_t p = fx_pair64((uint32_t)(ah * bh), al * bl);
-    p += fx_mid64(ah * (int32_t)bl);
-    p += fx_mid64((int32_t)al * bh);
-    return (int64_t)p;
-}
-
-/* a * b for an unsigned b below 2^32, exact, from the same four partial
- * products summed by columns (as fx_imul64_call, fx_math.c): ah bl plus
- * the top of al bl, then al bh plus the low half of that, each within 32
- * bits, so no carry is needed. Inline this form does better than the
- * pairs for this product, not for the other two (seed, M0). */
-static inline int64_t fx_iumul64_soft(int32_t a, uint32_t b)
-{
-    int32_t ah = a >> 16;
-    uint32_t al = (uint32_t)a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
-    uint32_t ll = al * bl;
-    int32_t t = ah * (int32_t)bl + (int32_t)(ll >> 16);
-    uint32_t u = al * bh + ((uint32_t)t & 0xFFFFu);
-    uint32_t hi = (uint32_t)(ah * (int32_t)bh + (t >> 16)) + (u >> 16);
-    return (int64_t)fx_pair64(hi, (u << 16) | (ll & 0xFFFFu));
-}
-
-/* a * b for unsigned a and b, exact, as fx_imul64_soft. */
-static inline uint64_t fx_umul64_soft(uint32_t a, uint32_t b)
-{
-    uint32_t ah = a >> 16, al = a & 0xFFFFu, bh = b >> 16, bl = b & 0xFFFFu;
-    uint32_t m1 = ah * bl, m2 = al * bh;
-    uint64_t p = fx_pair64(ah * bh, al * bl);
-    p += fx_pair64(m1 >> 16, m1 << 16);
-    return p + fx_pair64(m2 >> 16, m2 << 16);
-}
 
 /* The same, out of line (fx_math.c). A file whose functions recurse (the
  * shading loop, rt_shade.c) defines FX_MUL64_CALL 1 before its includes:

@@ -140,7 +140,7 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         /* The common case, in 32-bit operands (smull/smlal on a Cortex-M3):
          * the same values as the general path below. */
         int32_t ox = c.x - ray->o.x, oy = c.y - ray->o.y, oz = c.z - ray->o.z;
-        int64_t q = rt_dot3_small(ox, oy, oz, ray->d.x, ray->d.y, ray->d.z);
+        int64_t q = fx_dot3_small(ox, oy, oz, ray->d.x, ray->d.y, ray->d.z);
         /* |t| <= |oc| < sqrt(3) 2^30, so t fits; t +- r may not. */
         int32_t t32 = (int32_t)((q + UHALF) >> FX_UBITS);
         /* Nothing for an exact unit d (e = 0; #17: 5 instructions a

@@ -46,14 +46,14 @@ RT_COLD static int64_t shift_round_cold(int64_t v, int n)
 
 /* The low 32 bits of (t b + 2^(n - 1)) 2^-n, 0 < n < 32, for a unit
  * component b. On the M0, for n > 16 and a 32-bit t, from 16-bit
- * products in 32 bits (rt_mulsh_soft). */
+ * products in 32 bits (fx_mulsh). */
 static inline uint32_t frame_td(int64_t t, int32_t b, int n)
 {
     if (!FX_SOFT_MUL64 || t != (int32_t)t || n <= 16) {
         const uint64_t u = (uint64_t)(t * b) + ((uint32_t)1 << (n - 1));
         return ((uint32_t)u >> n) | ((uint32_t)(u >> 32) << (32 - n));
     }
-    return (uint32_t)rt_mulsh_soft((int32_t)t, b, (unsigned)n);
+    return (uint32_t)fx_mulsh((int32_t)t, b, (unsigned)n);
 }
 
 /* a b, exact, |a|, |b| <= 2^30: on the M0 with the middle partial products

@@ -17,9 +17,9 @@
  * of d (6 instructions fewer per component on the Cortex-M3). */
 static inline int32_t rt_mirror_c(int32_t d, int32_t nk, int32_t n)
 {
-    if (FX_SOFT_MUL64 && FX_UBITS >= 18) /* no call (rt_mulsh_soft) */
+    if (FX_SOFT_MUL64 && FX_UBITS >= 18) /* no call (fx_mulsh) */
         return (int32_t)((uint32_t)d +
-                         (uint32_t)rt_mulsh_soft(nk, n, FX_UBITS - 1));
+                         (uint32_t)fx_mulsh(nk, n, FX_UBITS - 1));
     const int64_t q =
         (fx_imul64(nk, n) + ((int64_t)1 << (FX_UBITS - 2))) >> (FX_UBITS - 1);
     return (int32_t)((uint32_t)d + (uint32_t)q);

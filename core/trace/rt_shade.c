@@ -60,13 +60,13 @@ RT_NOINLINE static fx_dir3 bumped_normal(const rt_material *m,
 
 /* The hit point of r at t, as shade() forms it (fx_v3_madd_d_near from a
  * small origin below 2^30, else fx_v3_madd_d), for the M0: products by
- * rt_mulsh_soft, not three calls (FX_MUL64_CALL), out of line so that
+ * fx_mulsh, not three calls (FX_MUL64_CALL), out of line so that
  * they stay out of shade()'s frame. */
 RT_NOINLINE static fx_vec3 hit_point_soft(const rt_ray *r, fx_t t)
 {
-    const fx_t ox = rt_mulsh_soft(t, r->d.x, FX_UBITS);
-    const fx_t oy = rt_mulsh_soft(t, r->d.y, FX_UBITS);
-    const fx_t oz = rt_mulsh_soft(t, r->d.z, FX_UBITS);
+    const fx_t ox = fx_mulsh(t, r->d.x, FX_UBITS);
+    const fx_t oy = fx_mulsh(t, r->d.y, FX_UBITS);
+    const fx_t oz = fx_mulsh(t, r->d.z, FX_UBITS);
     if (r->small && t < ((fx_t)1 << 30))
         return fx_v3(r->o.x + ox, r->o.y + oy, r->o.z + oz);
     return fx_v3(fx_add(r->o.x, ox), fx_add(r->o.y, oy), fx_add(r->o.z, oz));
@@ -90,7 +90,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     const fx_dir3 ng_out =
         rt_normal(o, r, t, &p, part, kr > 0 || kt > 0);
     fx_dir3 ng = ng_out;
-    const int64_t dn = rt_dot_raw(r->d, ng);
+    const int64_t dn = fx_d3_dot_exact(r->d, ng);
     int outside = o->kind == RT_QUAD || dn <= 0;
     if (dn > 0)
         ng = fx_d3_neg(ng); /* face the ray */
@@ -109,7 +109,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     if (RT_HAS_BUMP && m->bump != 0) {
         nb = bumped_normal(m, o, r, p, ng, outside);
         np = &nb;
-        dnn = rt_dot_raw(r->d, nb);
+        dnn = fx_d3_dot_exact(r->d, nb);
     }
     unsigned tex = 0; /* which colour: m->color, or color2 */
     /* The texture is read just inside the surface: see render-model.md. */
@@ -153,7 +153,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
             (void)ldv;
         }
         /* n.ld as fx_d3_dot rounds it; the highlight takes it exact. */
-        const int64_t nl = rt_dot_raw(*np, FX_SOFT_MUL64 ? ldv : ldm[0]);
+        const int64_t nl = fx_d3_dot_exact(*np, FX_SOFT_MUL64 ? ldv : ldm[0]);
         fx_t ndl = rt_cos_fx(nl);
         if (ndl <= 0)
             continue;

@@ -71,10 +71,10 @@ static inline int rt_occluded(const rt_tracer *tr, rt_work *wk,
     return 0;
 }
 
-/* rt_pd_dot_raw(lv, ld), the same exact value. On the M0, for a light
+/* fx_pd_dot_exact(lv, ld), the same exact value. On the M0, for a light
  * within 2^14 units on every axis (each component of lv within 2^30: one
  * unsigned compare of the biased values, wrapping, or-ed together) by
- * rt_dot3_unit_soft, which takes such values, not rt_dot3_soft (#17:
+ * fx_dot3_small_call, which takes such values, not fx_dot3_wide_soft (#17:
  * seed 7,404 -> 7,390 instructions a pixel on the M0). */
 static inline int64_t rt_lv_dot(fx_vec3 lv, fx_dir3 ld)
 {
@@ -82,8 +82,8 @@ static inline int64_t rt_lv_dot(fx_vec3 lv, fx_dir3 ld)
     if (FX_SOFT_MUL64 &&
         (((uint32_t)lv.x + b) | ((uint32_t)lv.y + b) | ((uint32_t)lv.z + b)) <
             2u * b)
-        return rt_dot3_unit_soft(lv.x, lv.y, lv.z, ld.x, ld.y, ld.z);
-    return rt_pd_dot_raw(lv, ld);
+        return fx_dot3_small_call(lv.x, lv.y, lv.z, ld.x, ld.y, ld.z);
+    return fx_pd_dot_exact(lv, ld);
 }
 
 /* 1 if light li is hidden from the hit point: a shadow ray from p_out

@@ -59,7 +59,7 @@ static inline int rt_highlight(const rt_material *m, int64_t nl, int64_t nd,
 {
     /* R = 2 (n.l) n - l; rv = R.v with v = -d, so
      * rv = (n.l)(-2 n.d) + l.d: two exact dot products. */
-    int64_t ld_d = rt_dot_raw(ld, d);
+    int64_t ld_d = fx_d3_dot_exact(ld, d);
     /* The product nl nd has 4 FX_UBITS fraction bits: take each to
      * FX_UBITS first (both below 1). */
     int64_t nl_u = (nl + ((int64_t)1 << (FX_UBITS - 1))) >> FX_UBITS;

@@ -1,0 +1,129 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * fx_dot: exact dot products of three int32 pairs and the rounded shifted
+ * product, the operations geometry and shading build on. Each gives the
+ * same bits on every CPU; where the CPU has no 64-bit multiply
+ * (FX_SOFT_MUL64, fx_cpu.h) they are formed from 16-bit pieces, summed so
+ * that as few carries as possible cross 32 bits.
+ */
+#ifndef FX_DOT_H
+#define FX_DOT_H
+
+#include "fx_dir.h"
+
+/* x0 y0 + x1 y1 + x2 y2 exact for any int32 values whose sum fits
+ * int64: from 16-bit halves (x = h 2^16 + l, 0 <= l < 2^16), the high,
+ * middle and low partial products summed apart (each a 32-bit product:
+ * |h h| <= 2^30, |h l| < 2^31, l l < 2^32) and joined once, wrapping.
+ * For the M0 (FX_SOFT_MUL64): one call instead of three to a
+ * 41-instruction product; out of line, as inline it grew the shading
+ * loop's frame, which every bounce level pays (288 bytes of stack on the
+ * seed, for 0.6 % fewer instructions). */
+RT_NOINLINE static int64_t fx_dot3_wide_soft(int32_t x0, int32_t x1, int32_t x2,
+                                        int32_t y0, int32_t y1, int32_t y2)
+{
+    const int32_t xh0 = x0 >> 16, xh1 = x1 >> 16, xh2 = x2 >> 16;
+    const int32_t yh0 = y0 >> 16, yh1 = y1 >> 16, yh2 = y2 >> 16;
+    const uint32_t xl0 = (uint32_t)x0 & 0xFFFFu;
+    const uint32_t xl1 = (uint32_t)x1 & 0xFFFFu;
+    const uint32_t xl2 = (uint32_t)x2 & 0xFFFFu;
+    const uint32_t yl0 = (uint32_t)y0 & 0xFFFFu;
+    const uint32_t yl1 = (uint32_t)y1 & 0xFFFFu;
+    const uint32_t yl2 = (uint32_t)y2 & 0xFFFFu;
+    const int64_t hh =
+        (int64_t)(xh0 * yh0) + (int64_t)(xh1 * yh1) + (int64_t)(xh2 * yh2);
+    const int64_t mid = (int64_t)(xh0 * (int32_t)yl0) +
+                        (int64_t)((int32_t)xl0 * yh0) +
+                        (int64_t)(xh1 * (int32_t)yl1) +
+                        (int64_t)((int32_t)xl1 * yh1) +
+                        (int64_t)(xh2 * (int32_t)yl2) +
+                        (int64_t)((int32_t)xl2 * yh2);
+    const uint64_t ll =
+        (uint64_t)(xl0 * yl0) + (uint64_t)(xl1 * yl1) + (uint64_t)(xl2 * yl2);
+    return (int64_t)(((uint64_t)hh << 32) + ((uint64_t)mid << 16) + ll);
+}
+
+/* (a c + 2^(s-1)) >> s modulo 2^32, for 17 <= s <= 32 and |c| <= 2^30
+ * (a unit component), in 32-bit pieces: with a = ah 2^16 + al and c = ch
+ * 2^16 + cl (al, cl unsigned), a c = hh 2^32 + (b1 + b2) 2^16 + l; only
+ * the terms below 2^k (k = s - 16) are added before the shift, each
+ * below 2^31 in magnitude as |ch| <= 2^14, and 2^(s-1) is a multiple of
+ * 2^16. Four 16x16 multiplies inline: where the core has no 64-bit
+ * multiply (FX_SOFT_MUL64, the M0) not a call (FX_MUL64_CALL) and the
+ * 64-bit rounding shift. */
+static inline int32_t fx_mulsh(int32_t a, int32_t c, unsigned s)
+{
+    const unsigned k = s - 16;
+    const int32_t ah = a >> 16, ch = c >> 16;
+    const uint32_t al = (uint32_t)a & 0xFFFFu, cl = (uint32_t)c & 0xFFFFu;
+    const int32_t hh = ah * ch, b1 = ah * (int32_t)cl, b2 = (int32_t)al * ch;
+    const uint32_t lr = ((al * cl) >> 16) + ((1u << (s - 1)) >> 16);
+    const int32_t low = (b1 & (int32_t)((1u << k) - 1)) + b2 + (int32_t)lr;
+    return (int32_t)(((uint32_t)hh << (16 - k)) + (uint32_t)(b1 >> k) +
+                     (uint32_t)(low >> k));
+}
+
+/* One term of fx_dot3_small: x y split at 16 bits with signed low
+ * halves, x = xh 2^16 + xl with -2^15 <= xl < 2^15, added to the running
+ * sums of the high, the two middle and the low partial products. */
+#define FX_DOT_STEP(xv, yv)                                                  \
+    do {                                                                     \
+        const int32_t xl_ = (int16_t)(xv), yl_ = (int16_t)(yv);              \
+        const int32_t xh_ = ((xv)-xl_) >> 16, yh_ = ((yv)-yl_) >> 16;        \
+        hh += xh_ * yh_;                                                     \
+        m1 += xh_ * yl_;                                                     \
+        m2 += xl_ * yh_;                                                     \
+        ll += xl_ * yl_;                                                     \
+    } while (0)
+
+/* x0 y0 + x1 y1 + x2 y2 exact for components within 2^30 + 2^16 (unit
+ * vectors, and offsets below 2^30 against them). Where 64-bit products
+ * are built from 16-bit ones (the M0), from signed low halves: |xh| <=
+ * 2^14 + 1 and |xl| <= 2^15, so the three high products and each set of
+ * three middle ones sum below 2^31 in 32 bits (3 (2^14 + 1) 2^15 <
+ * 2^31), and only the low ones (up to 2^30 each) need 64 bits (#17: 125
+ * -> 94 instructions a call on the M0). */
+static inline int64_t fx_dot3_small(int32_t x0, int32_t x1, int32_t x2,
+                                    int32_t y0, int32_t y1, int32_t y2)
+{
+    if (!FX_SOFT_MUL64)
+        return fx_imul64(x0, y0) + fx_imul64(x1, y1) + fx_imul64(x2, y2);
+    int32_t hh = 0, m1 = 0, m2 = 0;
+    int64_t ll = 0;
+    FX_DOT_STEP(x0, y0);
+    FX_DOT_STEP(x1, y1);
+    FX_DOT_STEP(x2, y2);
+    const uint64_t mid1 = fx_pair64((uint32_t)(m1 >> 16), (uint32_t)m1 << 16);
+    const uint64_t mid2 = fx_pair64((uint32_t)(m2 >> 16), (uint32_t)m2 << 16);
+    return (int64_t)(fx_pair64((uint32_t)hh, 0) + mid1 + mid2 +
+                     (uint64_t)ll);
+}
+#undef FX_DOT_STEP
+
+/* fx_dot3_small out of line, for the shading loop on the M0: inline it
+ * grew the frame every bounce level pays. */
+RT_NOINLINE static int64_t fx_dot3_small_call(int32_t x0, int32_t x1,
+                                             int32_t x2, int32_t y0,
+                                             int32_t y1, int32_t y2)
+{
+    return fx_dot3_small(x0, x1, x2, y0, y1, y2);
+}
+
+/* fx_d3_dot_raw(a, b), the same exact value (fx_dot3_small_call on the
+ * M0). */
+static inline int64_t fx_d3_dot_exact(fx_dir3 a, fx_dir3 b)
+{
+    if (!FX_SOFT_MUL64)
+        return fx_d3_dot_raw(a, b);
+    return fx_dot3_small_call(a.x, a.y, a.z, b.x, b.y, b.z);
+}
+
+/* fx_pd_dot_raw(p, d), the same exact value (fx_dot3_wide_soft on the M0). */
+static inline int64_t fx_pd_dot_exact(fx_vec3 p, fx_dir3 d)
+{
+    if (!FX_SOFT_MUL64)
+        return fx_pd_dot_raw(p, d);
+    return fx_dot3_wide_soft(p.x, p.y, p.z, d.x, d.y, d.z);
+}
+
+#endif /* FX_DOT_H */
