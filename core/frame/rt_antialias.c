@@ -131,7 +131,7 @@ RT_NOINLINE static void put_background(uint8_t *row, rt_work *wk, const rt_optio
 /* Into *act, in object order, the spans of all[0..n) that cover column
  * x; returns the next column where that set changes (INT32_MAX: none).
  * Why: rt_nearest_camera tests every span's columns at every pixel; the
- * set changes only at the spans' ends, a few times a row (#17). Out of
+ * set changes only at the spans' ends, a few times a row. Out of
  * line: so rarely called, it would only add flash. */
 RT_NOINLINE static int32_t active_spans(rt_row_spans *act, const rt_span *all,
                             unsigned n, int32_t x)
@@ -154,7 +154,7 @@ RT_NOINLINE static int32_t active_spans(rt_row_spans *act, const rt_span *all,
  * (its bytes made once), and the camera rays of lo..hi are walked
  * (rt_cam_walk), not each made afresh, in one ray whose origin and
  * fx_v3_small are set once. Why: the per-pixel tests, calls and copies
- * of a general loop cost more than the walk itself saves (#17). */
+ * of a general loop cost more than the walk itself saves. */
 static void row_1spp(const rt_tracer *tr, rt_work *wk, row_spans *rs,
                      const rt_cam_frame *cf, const rt_options *o,
                      unsigned y, uint8_t *row)

@@ -5,7 +5,7 @@
 
 /* a_i 2^j R / 2^(62 - FX_UBITS) rounded to nearest (ties up), for b =
  * a_i 2^(j-1) (j >= 1): the same quotient with a constant shift, which
- * is a few instructions where a variable 64-bit one is a dozen (#17). */
+ * is a few instructions where a variable 64-bit one is a dozen. */
 static inline int32_t unit_c(int32_t b, int32_t r)
 {
     /* Without a 32x32->64 multiply (FX_SOFT_MUL64), from balanced halves
@@ -15,8 +15,7 @@ static inline int32_t unit_c(int32_t b, int32_t r)
      * |bl|, |rl| <= 2^15 and 2^16 |bh| <= |b| + 2^15, so |S| <= (|b| +
      * r) / 2 + 2^16; as the result is within 1, |b| r <= 2^61 (1 +
      * 2^-31), and with |b|, r < 2^31 |b| + r stays near 3 2^30: S is
-     * an int32, with no carry to keep (#17: seed 8,353 -> 8,312
-     * instructions a pixel on the M0). */
+     * an int32, with no carry to keep. */
     if (FX_SOFT_MUL64 && FX_UBITS >= 29) {
         const int k = 45 - FX_UBITS;
         const int up = FX_UBITS >= 29 ? 16 - k : 0; /* never negative */
@@ -40,9 +39,7 @@ fx_dir3 fx_d3_normalize3(int32_t ax, int32_t ay, int32_t az)
      * normals and the planes they are tested against rely on. Both
      * that and the zero vector have a zero component, which most
      * vectors have not: one test of each on the way, before the squared
-     * length, while the components are still in the argument registers
-     * (#17: seed 2,645.7 -> 2,640.5 instructions a pixel on the M3,
-     * 7,344.6 -> 7,329.8 on the M0). */
+     * length, while the components are still in the argument registers. */
     if (ax == 0 || ay == 0 || az == 0) {
         if ((ax | ay | az) == 0)
             return fx_d3(0, 0, 0);
@@ -76,7 +73,7 @@ fx_dir3 fx_d3_normalize3(int32_t ax, int32_t ay, int32_t az)
         /* Plain products: a library call on the M0, but |a|^2 >= 2^62 is
          * rare, and soft ones would share the halves of a with fx_len2_raw
          * and keep them across the steps above, spilling on the common
-         * path (#17: seed 8,289 -> 8,252 instructions a pixel on the M0). */
+         * path. */
         const int s = 62 - FX_UBITS;
         const int64_t half = (int64_t)1 << (s - 1);
         return fx_d3((int32_t)(((int64_t)ax * r + half) >> s),
@@ -99,7 +96,7 @@ static inline int fits31(int64_t v)
  * 2^32), that is floor((t + 1) / 2); t is the sign of v above its low
  * word tl, so the result is u = floor((tl + 1) / 2) <= 2^31, less 2^31
  * when v < 0. Only 32-bit shifts: a variable 64-bit one costs a dozen
- * instructions on the M3 and a library call on the M0 (#17). */
+ * instructions on the M3 and a library call on the M0. */
 static int32_t shrink(int64_t v, int sh)
 {
     uint32_t lo = (uint32_t)v, hi = (uint32_t)((uint64_t)v >> 32);

@@ -150,8 +150,7 @@ static inline int32_t fx_hi_bal(int32_t a)
  * 16-bit halves a = ah 2^16 + al (fx_hi_bal): a^2 = ah^2 2^32 + ah al
  * 2^17 + al^2. ah^2 and al^2 are at most 2^30, so their columns of three
  * sum in a word each; ah al is within [-2^30, 2^30), so two of them sum
- * in an int32 and the third joins on its own. No absolute values (#17:
- * seed 8,414 -> 8,353 instructions a pixel on the M0, in normalising). */
+ * in an int32 and the third joins on its own. No absolute values. */
 static inline uint64_t fx_len2_raw(int32_t ax, int32_t ay, int32_t az)
 {
     if (!FX_SOFT_MUL64)
@@ -181,8 +180,7 @@ static inline int32_t fx_d3_unit_err(fx_dir3 d)
      * = hh 2^32 + mm 2^17 + ll, so the bits are 16 hh + floor((mm +
      * floor(ll / 2^17)) / 2^11): |ch cl| <= (|c| + 2^15) / 2 keeps mm
      * and the sum within an int32 while |d.x| + |d.y| + |d.z| < 2^32 -
-     * 2^17, as for any unit vector, and no 64-bit value is formed (#17:
-     * seed 7,329.8 -> 7,299.3 instructions a pixel on the M0). */
+     * 2^17, as for any unit vector, and no 64-bit value is formed. */
     if (FX_SOFT_MUL64 && FX_UBITS == 30) {
         const int32_t xh = fx_hi_bal(d.x), xl = (int16_t)d.x;
         const int32_t yh = fx_hi_bal(d.y), yl = (int16_t)d.y;
@@ -210,8 +208,7 @@ fx_dir3 fx_d3_normalize3(int32_t x, int32_t y, int32_t z);
 
 /* Unit vector along v (any scale, as fx_d3_normalize64). Inline, so that
  * the call takes the components in registers, with no wrapper and no
- * copy of the struct on the way (#17: seed 2,815 -> 2,803 instructions a
- * pixel on the M3, 8,252 -> 8,233 on the M0). */
+ * copy of the struct on the way. */
 static inline fx_dir3 fx_d3_normalize(fx_vec3 v)
 {
     return fx_d3_normalize3(v.x, v.y, v.z);
@@ -221,11 +218,10 @@ static inline fx_dir3 fx_d3_normalize(fx_vec3 v)
  * is c less this. On the M0, with |e| <= 2^(FX_UBITS - 15) and |c| <
  * 2^31, c e = ch e 2^16 + cl e in two 32-bit products (cl e within
  * +-2^(FX_UBITS + 1)); the rounding term is a multiple of 2^16, so the
- * shift splits exactly (#17). Elsewhere the top word of c e 2^(32 -
+ * shift splits exactly. Elsewhere the top word of c e 2^(32 -
  * FX_UBITS) (|e 2^(32 - FX_UBITS)| <= 2^17) is h = floor(c e /
  * 2^FX_UBITS), and the rounded quotient is floor((h + 1) / 2): one
- * multiply and no 64-bit add or shift (#17: seed 2,803 -> 2,775
- * instructions a pixel on the M3). */
+ * multiply and no 64-bit add or shift. */
 static inline int32_t fx_renorm_p(int32_t c, int32_t e)
 {
     if (FX_SOFT_MUL64)
@@ -238,9 +234,7 @@ static inline int32_t fx_renorm_p(int32_t c, int32_t e)
 
 /* v kept within +-1 in one test: v ^ sg is |v| - 1 for v < 0 and v
  * otherwise, below FX_UONE unless |v| > FX_UONE or v = FX_UONE, and then
- * the result is +-FX_UONE with the sign of v (#17: seed 2,640.5 ->
- * 2,638.3 instructions a pixel on the M3, 7,299.3 -> 7,290.1 on the
- * M0). */
+ * the result is +-FX_UONE with the sign of v. */
 static inline int32_t fx_unit_clamp(int32_t v)
 {
     const int32_t sg = v >> 31;
@@ -267,9 +261,8 @@ static inline int32_t fx_renorm_c(int32_t c, int32_t e)
  * = the exact |u|^2 - 1 + 2^-(FX_UBITS + 1) in units of 2^-2 FX_UBITS:
  * its range test is one unsigned compare (s + L below 2 L + 2^FX_UBITS
  * for L = 2^(2 FX_UBITS - 15)), and e a 32-bit value from s's two words,
- * so that each c e is one 32-bit factor (#17: from the 64-bit e the
- * compiler formed each as a 64x64 product, three multiplies instead of
- * one on the Cortex-M3). */
+ * so that each c e is one 32-bit factor (from a 64-bit e the compiler
+ * forms each product as a 64x64 one). */
 static inline fx_dir3 fx_d3_renorm(fx_dir3 u)
 {
     const uint64_t s = fx_len2_raw(u.x, u.y, u.z) -
@@ -279,9 +272,8 @@ static inline fx_dir3 fx_d3_renorm(fx_dir3 u)
     if (s + lim >= 2 * lim + ((uint64_t)1 << FX_UBITS))
         return fx_d3_normalize(fx_d3_raw(u));
     /* On the M0, e from the words of t = s + L, which the test forms
-     * anyway, less L / 2^FX_UBITS: L is a multiple of 2^FX_UBITS (#17:
-     * seed 7,290.1 -> 7,279.1 instructions a pixel on the M0; the M3
-     * does better with s). */
+     * anyway, less L / 2^FX_UBITS: L is a multiple of 2^FX_UBITS. With a
+     * 64-bit multiply, s itself is cheaper. */
     const uint64_t t = FX_SOFT_MUL64 ? s + lim : s;
     const int32_t e = (int32_t)((((uint32_t)t >> FX_UBITS) |
                                  ((uint32_t)(t >> 32) << (32 - FX_UBITS))) -
@@ -291,9 +283,7 @@ static inline fx_dir3 fx_d3_renorm(fx_dir3 u)
         /* One test for the three clamps, which a renormalised vector
          * nearly never needs: each c - p within [-1, 1) is one unsigned
          * compare of the biased value (wrapping), and 2 FX_UONE is a
-         * power of two, so the three can be or-ed together (#17: seed
-         * 2,646 -> 2,629 instructions a pixel on the Cortex-M3; on the
-         * M0 it cost the inlining of rt_reflect_dir_dn, glass 0.3 %). */
+         * power of two, so the three can be or-ed together. */
         const int32_t x = u.x - fx_renorm_p(u.x, e);
         const int32_t y = u.y - fx_renorm_p(u.y, e);
         const int32_t z = u.z - fx_renorm_p(u.z, e);

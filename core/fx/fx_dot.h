@@ -15,10 +15,9 @@
  * int64: from 16-bit halves (x = h 2^16 + l, 0 <= l < 2^16), the high,
  * middle and low partial products summed apart (each a 32-bit product:
  * |h h| <= 2^30, |h l| < 2^31, l l < 2^32) and joined once, wrapping.
- * For the M0 (FX_SOFT_MUL64): one call instead of three to a
- * 41-instruction product; out of line, as inline it grew the shading
- * loop's frame, which every bounce level pays (288 bytes of stack on the
- * seed, for 0.6 % fewer instructions). */
+ * Without a 64-bit multiply (FX_SOFT_MUL64): one call instead of three
+ * soft products; out of line, as inline it grows the frame of the
+ * recursive shading loop, which every bounce level pays. */
 RT_NOINLINE static int64_t fx_dot3_wide_soft(int32_t x0, int32_t x1, int32_t x2,
                                         int32_t y0, int32_t y1, int32_t y2)
 {
@@ -81,8 +80,7 @@ static inline int32_t fx_mulsh(int32_t a, int32_t c, unsigned s)
  * are built from 16-bit ones (the M0), from signed low halves: |xh| <=
  * 2^14 + 1 and |xl| <= 2^15, so the three high products and each set of
  * three middle ones sum below 2^31 in 32 bits (3 (2^14 + 1) 2^15 <
- * 2^31), and only the low ones (up to 2^30 each) need 64 bits (#17: 125
- * -> 94 instructions a call on the M0). */
+ * 2^31), and only the low ones (up to 2^30 each) need 64 bits. */
 static inline int64_t fx_dot3_small(int32_t x0, int32_t x1, int32_t x2,
                                     int32_t y0, int32_t y1, int32_t y2)
 {

@@ -90,7 +90,7 @@ const uint8_t fx_ctz_table[32] = {
     0,  1,  28, 2,  29, 14, 24, 3, 30, 22, 20, 15, 25, 17, 4,  8,
     31, 27, 13, 23, 21, 19, 16, 7, 26, 12, 18, 6,  11, 5,  10, 9};
 
-/* Out of line the products are summed by columns instead (#17): ah bl
+/* Out of line the products are summed by columns instead: ah bl
  * plus the top of al bl, then al bh plus the low half of that, each
  * below 2^32, so no carry is needed and no 64-bit register pair ties the
  * allocation: 26 instructions a call on the M0 instead of 31. Inline,
@@ -140,8 +140,7 @@ uint32_t fx_udiv64_32(uint64_t n, uint32_t d)
          * the seed r0 ~ 2^30 / vn1 that fx_rsqrt_tab holds for vn1^2
          * (|e| < 2^22): never above 2^31 / vn1 and at most 2^-14.9 below
          * it, as checked over every vn1; x rc / 2^31 then starts at most
-         * 6 below x / vn1 (below 2^17), and the remainder fixes it
-         * (#17: 142 -> 94 instructions a call on the M0). */
+         * 6 below x / vn1 (below 2^17), and the remainder fixes it. */
         const uint32_t r0 = fx_rsqrt_tab[((vn1 * vn1) >> 24) - 64];
         const int32_t e = (int32_t)((1u << 30) - vn1 * r0);
         rc = (uint32_t)((int32_t)(2 * r0) +

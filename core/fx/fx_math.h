@@ -56,7 +56,7 @@ static inline fx_t fx_sat64(int64_t v)
 /* The same, out of line (fx_math.c). A file whose functions recurse (the
  * shading loop, rt_shade.c) defines FX_MUL64_CALL 1 before its includes:
  * there a dozen inline copies crowd the registers and grow the frame that
- * every bounce level pays (1,840 bytes instead of 512 on the M0), while a
+ * every bounce level pays (several times the stack on the M0), while a
  * call costs a few instructions. */
 #ifndef FX_MUL64_CALL
 #define FX_MUL64_CALL 0
@@ -161,7 +161,7 @@ extern const uint8_t fx_clz_table[32], fx_ctz_table[32];
  * Without CLZ (FX_SOFT_CLZ) __builtin_clz is a library call of about 20
  * instructions: there x with every bit below its top one set, 2^(32 -
  * clz) - 1, times a de Bruijn constant puts a distinct 5-bit index in
- * the top bits (#17). */
+ * the top bits. */
 static inline int fx_clz32(uint32_t x)
 {
 #if defined(__GNUC__)
@@ -187,7 +187,7 @@ static inline int fx_clz32(uint32_t x)
 /* Number of trailing zero bits of x (0..31); exact. x must not be 0.
  * Without CLZ (FX_SOFT_CLZ) __builtin_ctz is a library call of about 20
  * instructions: there the lowest set bit times a de Bruijn constant puts
- * a distinct 5-bit index in the top bits (#17). */
+ * a distinct 5-bit index in the top bits. */
 static inline int fx_ctz32(uint32_t x)
 {
 #if defined(__GNUC__)

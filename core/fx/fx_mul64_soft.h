@@ -26,8 +26,7 @@ static inline uint64_t fx_mid64(int32_t m)
 
 /* a * b, exact, from 16-bit halves (the low halves unsigned): each of the
  * four partial products fits 32 bits, and the two middle ones are added
- * to the pair hh:ll by adds and adcs (#17: 24 instructions as a call on
- * the M0, 41 with a 64-bit middle sum). The sum is the product mod
+ * to the pair hh:ll by adds and adcs. The sum is the product mod
  * 2^64, which fits int64. */
 static inline int64_t fx_imul64_soft(int32_t a, int32_t b)
 {
@@ -43,7 +42,7 @@ static inline int64_t fx_imul64_soft(int32_t a, int32_t b)
  * products summed by columns (as fx_imul64_call, fx_math.c): ah bl plus
  * the top of al bl, then al bh plus the low half of that, each within 32
  * bits, so no carry is needed. Inline this form does better than the
- * pairs for this product, not for the other two (seed, M0). */
+ * pairs for this product, not for the other two. */
 static inline int64_t fx_iumul64_soft(int32_t a, uint32_t b)
 {
     int32_t ah = a >> 16;

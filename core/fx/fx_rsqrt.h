@@ -16,8 +16,7 @@ extern const uint16_t fx_rsqrt_tab[192];
  * bh) 2^16 + al bl, summed by columns (Hacker's Delight, mulhu): t = al
  * bh + floor(al bl / 2^16) and w = ah bl + (t mod 2^16) are each at most
  * (2^16 - 1) 2^16, so neither wraps, and the high word is ah bh plus
- * their high halves, without the low word a full soft product joins
- * (#17: seed 8,502 -> 8,443 instructions a pixel on the M0). */
+ * their high halves, without the low word a full soft product joins. */
 static inline uint32_t fx_umulhi32(uint32_t a, uint32_t b)
 {
     if (!FX_SOFT_MUL64)
@@ -31,7 +30,7 @@ static inline uint32_t fx_umulhi32(uint32_t a, uint32_t b)
 /* floor(x rc / 2^31) for rc <= 2^16, exact, with 32-bit products only:
  * x = xh 2^16 + xl gives floor((xh rc + floor(xl rc / 2^16)) / 2^15),
  * and the sum stays below 2^32. A quotient x / d from rc ~ 2^31 / d,
- * for cores without a divide instruction (#17). */
+ * for cores without a divide instruction. */
 static inline uint32_t fx_rcp_quot(uint32_t x, uint32_t rc)
 {
     return ((x >> 16) * rc + (((x & 0xFFFFu) * rc) >> 16)) >> 15;
@@ -61,7 +60,7 @@ static inline uint32_t fx_rsqrt_q30(uint32_t m, int32_t r)
     uint32_t uh = ur >> 16, ul = ur & 0xFFFFu;
     /* p = floor(m r^2 / 2^32), at most 2^58 since r is low. e * 2^58 =
      * 2^58 - p, below 2^39: its bits 8..39, e8, are those of -p, as 2^58
-     * only changes bit 58 and up (one constant less, #17). */
+     * only changes bit 58 and up (one constant less). */
     uint32_t e8;
     if (FX_SOFT_MUL64) {
         /* ur^2 = H 2^32 + L by columns, in three products: w = 2 uh ul
@@ -72,8 +71,7 @@ static inline uint32_t fx_rsqrt_q30(uint32_t m, int32_t r)
          * + (m >> 8) H0 + floor(c / 2^8) for c = (m mod 2^8) H0 < 2^16,
          * each term within 32 bits mod 2^32, and m H mod 2^8 = c mod 2^8:
          * three products where m H in full takes four, and no 64-bit
-         * value (#17: seed 7,393 -> 7,345 instructions a pixel on the
-         * M0). */
+         * value. */
         uint32_t sq = ul * ul, w = 2 * (uh * ul) + (sq >> 16);
         uint32_t h = uh * uh + (w >> 16), lh = w & 0xFFFFu;
         uint32_t ml = m & 0xFFFFu, ll = sq & 0xFFFFu, mh = m >> 16;
@@ -93,7 +91,7 @@ static inline uint32_t fx_rsqrt_q30(uint32_t m, int32_t r)
         return 2 * ur + (fx_umulhi32(ur, e8) >> 18);
     /* floor(ur e8 / 2^50) by columns as fx_umulhi32: with ur <= 2^30 and
      * e8 <= 2^31, t = uh el + ul eh + floor(ul el / 2^16) stays below
-     * 2^32 with no carry to keep (#17). */
+     * 2^32 with no carry to keep. */
     uint32_t eh = e8 >> 16, el = e8 & 0xFFFFu;
     uint32_t t = uh * el + ul * eh + ((ul * el) >> 16);
     return 2 * ur + ((uh * eh + (t >> 16)) >> 18);

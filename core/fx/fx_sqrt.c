@@ -100,11 +100,11 @@ static inline uint32_t sqrtrem64(uint32_t hi, uint32_t lo, uint64_t *rem)
         /* ARMv6-M has no divide instruction either: a 32-bit divide is a
          * library call of about 80 instructions there. So both divides
          * come from R = fx_rsqrt_q29(hi) ~ 2^45 / sqrt(hi), at most 2^-20
-         * below it (#17). hi R / 2^45 is then within 2^-4 below sqrt(hi)
+         * below it. hi R / 2^45 is then within 2^-4 below sqrt(hi)
          * < 2^16, and without the product of the low halves and with the
          * two middle ones floored apart (each below 2^32) it loses less
          * than 2^-11 more: floor(sqrt(hi)) or one less, which one test
-         * fixes (#17: seed 7,404 -> 7,393 instructions a pixel on the M0). */
+         * fixes. */
         const uint32_t rr = (uint32_t)fx_rsqrt_q29(hi);
         const uint32_t hh = hi >> 16, rh = rr >> 16, rl = rr & 0xFFFFu;
         s1 = (hh * rh + ((hh * rl) >> 16) + (((hi & 0xFFFFu) * rh) >> 16)) >>
@@ -140,8 +140,7 @@ static inline uint32_t sqrtrem64(uint32_t hi, uint32_t lo, uint64_t *rem)
     /* r = (2u + (a1 & 1)) * 2^16 + (lo mod 2^16) - q^2, in (-2^33, 2^33),
      * with u < s1: word pairs, q^2 from a 32-bit multiply (wraps to 0
      * only for q = 2^16), since a 64-bit one is a library call on
-     * Cortex-M0 (#17: pairs, seed 8,312 -> 8,290 instructions a pixel on
-     * the M0, 2,819 -> 2,817 on the M3). */
+     * Cortex-M0. */
     uint64_t r = fx_pair64(u >> 15, (u << 17) | (lo & 0x1FFFF)) -
                  fx_pair64(q >> 16, q * q);
     if ((int64_t)r < 0) {
@@ -165,7 +164,7 @@ static inline int normalise64(uint64_t a, uint32_t *hi, uint32_t *lo)
         return 16 + z / 2;
     }
     int z = fx_clz32(h) & ~1;
-    /* No branch on z (#17: seed 2,816.9 -> 2,815.3 on the M3). */
+    /* No branch on z. */
     *hi = (h << z) | ((l >> 1) >> (31 - z));
     *lo = l << z;
     return z / 2;

@@ -80,10 +80,10 @@
 #define RT_STATS 1
 #endif
 
-/* RT_ACCURACY (0 fast, 1 default, 2 precise) was removed: fast saved 0.9 %
- * of the Cortex-M3 instructions for about -2 dB, precise cost 0.4 % for
- * +0.0 dB. The math layer rounds as fx_math.h states, as the default did;
- * the accuracy setting is RT_UNIT_BITS, below. */
+/* RT_ACCURACY (0 fast, 1 default, 2 precise) was removed: neither setting
+ * bought accuracy worth its cost (CHANGELOG.md). The math layer rounds as
+ * fx_math.h states, as the default did; the accuracy setting is
+ * RT_UNIT_BITS, below. */
 #ifdef RT_ACCURACY
 #error "RT_ACCURACY was removed: RT_UNIT_BITS (16..30) is the accuracy setting"
 #endif
