@@ -306,15 +306,13 @@ $(FW_BUILD)/core/%.o: core/%.c $(FW_FLAGS_STAMP) $(FW_EFFECTS)
 
 # The core's set-up code runs once a render, before the first pixel (the
 # tracer's tables, the direction grids, the cut-off bounds, the scene's
-# derived fields): compiled for size, it leaves flash for the per-pixel
-# code, which -O2 makes faster. FW_COLD_OPT is empty where FW_OPT is -Os.
-# fx_vec's out-of-line helpers are as fast there. On ARMv6-M (the M0 boards)
-# so is the row culling, rt_cull: -Os makes it both smaller and faster
-# (#17: seed 160x120 6,972.4 -> 6,969.9 instructions a pixel, many 80x60
-# 10,351.9 -> 10,301.3, 1,640 bytes less text; on the M3 it would cost the
-# many scene 0.3 %).
+# derived fields), and the row culling once a row: compiled for size, they
+# leave flash for the per-pixel code, which -O2 makes faster, at no
+# measurable cost per pixel on any board (docs/architecture.md gives the
+# figures). One list for every CPU. FW_COLD_OPT is empty where FW_OPT is
+# -Os.
 FW_COLD_SRC := rt_tracer rt_dirgrid rt_cutoff rt_sealed rt_scene rt_features \
-    fx_trig fx_vec $(if $(filter -mcpu=cortex-m0%,$(FW_CPU)),rt_cull)
+    fx_trig fx_vec rt_cull
 FW_COLD_OPT := $(if $(filter -Os,$(FW_OPT)),,-Os)
 $(patsubst %.c,$(FW_BUILD)/%.o,$(foreach n,$(FW_COLD_SRC),$(filter %/$(n).c,$(CORE_SRC)))): \
     FW_EXTRA := $(FW_COLD_OPT)
