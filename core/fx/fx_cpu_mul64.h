@@ -10,5 +10,6 @@
 #define FX_CPU_NAME "64-bit multiply"
 #define FX_SOFT_MUL64 0
 #define FX_SOFT_CLZ 0
+#define FX_SOFT_DIV 0
 
 #endif /* FX_CPU_MUL64_H */

@@ -10,5 +10,6 @@
 #define FX_CPU_NAME "rv32 without zbb"
 #define FX_SOFT_MUL64 0
 #define FX_SOFT_CLZ 1
+#define FX_SOFT_DIV 0
 
 #endif /* FX_CPU_RV32_H */

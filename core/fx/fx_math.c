@@ -133,7 +133,7 @@ uint32_t fx_udiv64_32(uint64_t n, uint32_t d)
     uint32_t un32 = s ? (u1 << s) | (u0 >> (32 - s)) : u1;
     uint32_t un10 = u0 << s, un1 = un10 >> 16, un0 = un10 & 0xFFFF;
     uint32_t q1, rhat, rc = 0;
-    if (FX_SOFT_MUL64) {
+    if (FX_SOFT_DIV) {
         /* No divide instruction (ARMv6-M): a 32-bit divide is a library
          * call of about 80 instructions. Instead rc ~ 2^31 / vn1 (at
          * most 2^16) by one Newton step, r0 (2 - vn1 r0 / 2^30), from
@@ -163,7 +163,7 @@ uint32_t fx_udiv64_32(uint64_t n, uint32_t d)
     }
     uint32_t un21 = un32 * b + un1 - q1 * v;
     uint32_t q0;
-    if (FX_SOFT_MUL64) {
+    if (FX_SOFT_DIV) {
         q0 = fx_rcp_quot(un21, rc); /* as q1 */
         rhat = un21 - q0 * vn1;
         while (rhat >= vn1) {

@@ -96,7 +96,7 @@ static inline uint32_t sqrtrem48(uint32_t h, uint32_t lo, uint32_t *rem)
 static inline uint32_t sqrtrem64(uint32_t hi, uint32_t lo, uint64_t *rem)
 {
     uint32_t r1, s1, n, q, u;
-    if (FX_SOFT_MUL64) {
+    if (FX_SOFT_DIV) {
         /* ARMv6-M has no divide instruction either: a 32-bit divide is a
          * library call of about 80 instructions there. So both divides
          * come from R = fx_rsqrt_q29(hi) ~ 2^45 / sqrt(hi), at most 2^-20
