@@ -8,6 +8,7 @@
 #   make firmware BOARD=an385 [SCENE=... WIDTH=... HEIGHT=... SPP=...]
 #   make qemu     BOARD=an385 [same]     make size BOARD=an385
 #   make SANITIZE=1 test                 host tests under ASan + UBSan
+#   make web        the page in build/web/ (WebAssembly); make web-serve
 #
 # V=1 shows full command lines; `make print-VAR` prints a variable.
 # Build output goes under build/<target>/ only.
