@@ -228,6 +228,37 @@ def check_error(b, web, text, what):
 
 
 BROKEN_OBJ = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n"
+# Numbers in exponent form, which the OBJ reader hands to strtod.
+EXPO_OBJ = ("v -5e-1 0 -0.5E+0\nv 1e0 0 -5e-1\nv 0 0 7.5e-1\n"
+            "v 125E-3 1.2e0 0\nv 2.5e-1 2.5e-1 2.5e-1\n"
+            "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n")
+EXPO_SCENE = """image 64 48
+camera eye 0 2 -5 look 0 0.5 0 fov 50
+light -5 9 -6
+material m color 0.8 0.3 0.2 shininess 20
+material floor checker 0.3 0.3 0.35 1.0 color 0.8 0.8 0.8 reflect 0.3
+quad corner -5 0 -5 edge1 0 0 10 edge2 10 0 0 material floor
+mesh file "models/expo.obj" material m rotate 10 25 -40 scale 1.5 smooth
+"""
+
+
+def check_scene_text(b, web, text, what):
+    """A scene given as text renders on the page as on the command line
+    (core and reference), run in the served folder."""
+    with open(os.path.join(web, "scenes/seed.scene"), "w") as f:
+        f.write(text)
+    size = re.search(r"^image (\d+) (\d+)", text, re.M)
+    st = page_render(b, "scenes/seed.scene", text, {
+        "width": int(size.group(1)), "height": int(size.group(2))})
+    check(st["state"] == "done", "%s: the page rendered (%s)" %
+          (what, st["error"].strip() or st["state"]))
+    for canvas_name, extra in (("fixed", []), ("ref", ["--reference"])):
+        out = os.path.join(TMP, canvas_name + ".ppm")
+        r = run(["-q", "-o", out] + extra + ["scenes/seed.scene"], cwd=web)
+        _, _, rgb = canvas(b, canvas_name)
+        check(r.returncode == 0 and rgb == ppm_rgb(out),
+              "%s: the %s canvas equals the command line's bytes" %
+              (what, canvas_name))
 
 
 def check_browser(web_dir, model):
@@ -237,8 +268,10 @@ def check_browser(web_dir, model):
     shutil.copytree(web_dir, web, ignore=shutil.ignore_patterns("obj"))
     with open(os.path.join(web, "scenes/models/broken.obj"), "w") as f:
         f.write(BROKEN_OBJ)
+    with open(os.path.join(web, "scenes/models/expo.obj"), "w") as f:
+        f.write(EXPO_OBJ)
     with open(os.path.join(web, "scenes/index.txt"), "a") as f:
-        f.write("models/broken.obj\n")
+        f.write("models/broken.obj\nmodels/expo.obj\n")
     with Browser(web) as b:
         b.open("index.html")
         b.eval("await fixtrace.ready; return 1")
@@ -255,6 +288,8 @@ def check_browser(web_dir, model):
                                   "depth": 3, "adaptive": 8, "draft": 32},
                      ["-W", "96", "-H", "72", "-s", "4", "-d", "3",
                       "--adaptive", "8", "--draft", "32"], False)
+        check_scene_text(b, web, EXPO_SCENE, "an OBJ file with numbers in "
+                         "exponent form, rotated")
         seed = open(os.path.join(ROOT, "scenes/seed.scene")).read()
         check_error(b, web, re.sub(r"^camera", "camra", seed, count=1,
                                    flags=re.M), "a misspelt keyword")
