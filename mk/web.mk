@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: MIT
 # The browser page (port/wasm/README.md):
 #
-#   make web          the core and the double reference as WebAssembly,
-#                     and the page, in build/web/ (open index.html through
+#   make web          the core, the double reference and the OBJ reader
+#                     as WebAssembly, and the page, in build/web/ (open index.html through
 #                     a server: browsers fetch no WebAssembly from file://)
 #   make web-serve    serves build/web/ on http://127.0.0.1:$(WEB_PORT)/
 #   make web-screenshot  docs/img/web.png, the page in headless Chromium
@@ -17,7 +17,8 @@ WASM_CC ?= clang
 WASM_LD ?= wasm-ld
 WEB_BUILD ?= build/web
 WEB_PORT ?= 8000
-WEB_OBJ_DIR := $(WEB_BUILD)/obj
+# Objects beside the served folder, not in it.
+WEB_OBJ_DIR := $(WEB_BUILD)-obj
 
 WASM_CFLAGS := --target=wasm32 -std=c99 -O2 -ffreestanding -nostdlib \
     -mbulk-memory -fno-common -ffunction-sections -fdata-sections
@@ -30,6 +31,8 @@ WASM_PORT_SRC := port/wasm/api.c port/wasm/mesh.c port/wasm/libc.c \
     port/wasm/libm.c port/wasm/heap.c port/wasm/format.c
 WASM_SRC := $(CORE_SRC) $(WASM_PORT_SRC) $(WASM_HOST_SRC)
 WASM_OBJ := $(WASM_SRC:%.c=$(WEB_OBJ_DIR)/%.o)
+# Changed flags rebuild every object: they are kept in this stamp.
+WASM_STAMP := $(WEB_OBJ_DIR)/flags.txt
 WASM := $(WEB_BUILD)/fixtrace.wasm
 # A stack of 1 MiB: the reference keeps its double copy of the scene on
 # it. The heap (port/wasm/heap.c) grows the memory, up to 256 MiB. No
@@ -42,7 +45,7 @@ WEB_PAGE := $(WEB_BUILD)/index.html $(WEB_BUILD)/style.css \
 WEB_SCENES := $(patsubst scenes/%,$(WEB_BUILD)/scenes/%,\
     $(wildcard scenes/*.scene) $(wildcard scenes/models/*.obj))
 
-.PHONY: web web-serve web-screenshot web-cost-fit web-check-tools
+.PHONY: web web-serve web-screenshot web-cost-fit web-check-tools web-force
 web: $(WASM) $(WEB_PAGE) $(WEB_BUILD)/scenes/index.txt
 
 web-check-tools:
@@ -53,24 +56,30 @@ web-check-tools:
 	    "install it with: apt-get install --no-install-recommends lld" >&2; \
 	    exit 1; }
 
-$(WEB_OBJ_DIR)/core/%.o: core/%.c | web-check-tools
+$(WASM_STAMP): web-force | web-check-tools
+	$(Q)mkdir -p $(@D)
+	$(Q)echo '$(WASM_CC) $(WASM_CFLAGS) $(WASM_LD) $(WASM_LDFLAGS)' \
+	    >$@.tmp && if cmp -s $@.tmp $@; then rm -f $@.tmp; \
+	    else mv -f $@.tmp $@; fi
+
+$(WEB_OBJ_DIR)/core/%.o: core/%.c $(WASM_STAMP) | web-check-tools
 	@$(if $(Q),echo "  CC      $< (wasm)")
 	$(Q)mkdir -p $(@D)
 	$(Q)$(WASM_CC) $(WASM_CFLAGS) $(CORE_WARN) $(CORE_INC) -MMD -MP -c $< -o $@
 
-$(WEB_OBJ_DIR)/port/wasm/%.o: port/wasm/%.c | web-check-tools
+$(WEB_OBJ_DIR)/port/wasm/%.o: port/wasm/%.c $(WASM_STAMP) | web-check-tools
 	@$(if $(Q),echo "  CC      $< (wasm)")
 	$(Q)mkdir -p $(@D)
 	$(Q)$(WASM_CC) $(WASM_CFLAGS) $(WARN) -Iport/wasm/include $(CORE_INC) \
 	    -Iport/posix -MMD -MP -c $< -o $@
 
-$(WEB_OBJ_DIR)/port/posix/%.o: port/posix/%.c | web-check-tools
+$(WEB_OBJ_DIR)/port/posix/%.o: port/posix/%.c $(WASM_STAMP) | web-check-tools
 	@$(if $(Q),echo "  CC      $< (wasm)")
 	$(Q)mkdir -p $(@D)
 	$(Q)$(WASM_CC) $(WASM_CFLAGS) $(WARN) -Iport/wasm/include $(CORE_INC) \
 	    -Iport/posix -MMD -MP -c $< -o $@
 
-$(WASM): $(WASM_OBJ)
+$(WASM): $(WASM_OBJ) $(WASM_STAMP)
 	@$(if $(Q),echo "  LD      $@")
 	$(Q)$(WASM_LD) $(WASM_LDFLAGS) $(WASM_OBJ) -o $@.tmp && mv -f $@.tmp $@
 
@@ -80,6 +89,8 @@ $(WEB_BUILD)/%: port/wasm/web/%
 $(WEB_BUILD)/cost_model.js: port/wasm/cost_model.js
 	$(Q)mkdir -p $(@D)
 	$(Q)cp $< $@
+
+web-force:
 
 # Every scene (and the meshes they name) beside the page, and their list.
 $(WEB_BUILD)/scenes/%: scenes/%

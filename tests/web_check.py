@@ -267,7 +267,7 @@ def check_browser(web_dir, model):
     from cdp import Browser
     # A copy of the page's folder with a broken OBJ file among the meshes.
     web = os.path.join(TMP, "web")
-    shutil.copytree(web_dir, web, ignore=shutil.ignore_patterns("obj"))
+    shutil.copytree(web_dir, web)
     with open(os.path.join(web, "scenes/models/broken.obj"), "w") as f:
         f.write(BROKEN_OBJ)
     with open(os.path.join(web, "scenes/models/expo.obj"), "w") as f:

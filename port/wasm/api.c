@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * api.c: the WebAssembly module's exports (api.h). Everything is static: one scene, and two images (the fixed-point core's
- * and the double reference's) of at most FT_MAX_PIXELS pixels each. A
- * scene error is worded exactly as the command line words it
+ * api.c: the WebAssembly module's exports (api.h). Everything is static
+ * but the meshes (heap.h): one scene, and two images (the fixed-point
+ * core's and the double reference's) of at most FT_MAX_PIXELS pixels
+ * each. A scene error is worded exactly as the command line words it
  * (port/posix/cli_util.c, cli_print_parse_error): "NAME:LINE:COL: error:
  * MESSAGE", then the line, then a caret under the column.
  */
