@@ -229,6 +229,17 @@ def check_error(b, web, text, what):
           (what, st["error"]))
 
 
+def check_option_error(b, opts, args):
+    """A control out of its range: the page says what the command line
+    says of the same option."""
+    want = run(["-q", "-o", os.path.join(TMP, "x.ppm")] + args +
+               ["scenes/seed.scene"])
+    st = page_render(b, "scenes/seed.scene", None, opts)
+    check(want.returncode == 2 and st["state"] == "error" and
+          st["error"] + "\n" == want.stderr,
+          "%s: the page says '%s'" % (" ".join(args), st["error"]))
+
+
 BROKEN_OBJ = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n"
 # Numbers in exponent form, which the OBJ reader hands to strtod.
 EXPO_OBJ = ("v -5e-1 0 -0.5E+0\nv 1e0 0 -5e-1\nv 0 0 7.5e-1\n"
@@ -301,6 +312,10 @@ def check_browser(web_dir, model):
                     "material mirror\n", "a mesh file that is not there")
         check_error(b, web, seed + "\nmesh file \"models/broken.obj\" "
                     "material mirror\n", "an OBJ file with an error")
+        check_option_error(b, {"adaptive": 300, "spp": 4},
+                           ["-s", "4", "--adaptive", "300"])
+        check_option_error(b, {"adaptive": 8, "spp": 1},
+                           ["-s", "1", "--adaptive", "8"])
         # The cost table as the page shows it: the stated errors.
         st = page_render(b, "scenes/seed.scene", None, {
             "width": 320, "height": 240, "spp": 1, "depth": -1,

@@ -71,6 +71,31 @@ static void put_u(unsigned long v)
         put_c(d[--k]);
 }
 
+static void put_i(long v)
+{
+    if (v < 0) {
+        put_c('-');
+        put_u(0ul - (unsigned long)v);
+    } else {
+        put_u((unsigned long)v);
+    }
+}
+
+/* The command line's message for an option out of its range. */
+static int range_error(const char *option, long lo, long hi, long got)
+{
+    put_s("fixtrace: ");
+    put_s(option);
+    put_s(" must be from ");
+    put_i(lo);
+    put_s(" to ");
+    put_i(hi);
+    put_s(" (got ");
+    put_i(got);
+    put_s(")");
+    return RT_ERR_ARG;
+}
+
 static void clear_message(void)
 {
     msg_len = 0;
@@ -169,6 +194,18 @@ int ft_begin(int which, int width, int height, int spp, int depth,
     clear_message();
     if (!have_scene || which < 0 || which > 1)
         return RT_ERR_ARG;
+    if (spp != 0 && spp != 1 && spp != 4 && spp != 9 && spp != 16) {
+        put_s("fixtrace: -s must be 1, 4, 9 or 16 (got ");
+        put_i(spp);
+        put_s(")");
+        return RT_ERR_ARG;
+    }
+    if (depth > RT_MAX_DEPTH)
+        return range_error("-d", 0, RT_MAX_DEPTH, depth);
+    if (adaptive < 0 || adaptive > 255)
+        return range_error("--adaptive", 1, 255, adaptive);
+    if (draft < 0 || draft > 255)
+        return range_error("--draft", 1, 255, draft);
     rt_options *o = &opt[which];
     rt_options_from_scene(o, &scene);
     if (width > 0)

@@ -51,7 +51,9 @@ FT_EXPORT(ft_scene_depth) int ft_scene_depth(void);
  * core, 1: the double reference), as the command line's -W -H -s -d
  * --adaptive --draft do: a width, height or spp of 0 and a depth below 0
  * keep the scene's; adaptive and draft 0 are off, and the reference takes
- * neither. Zeroes the counters. Returns 0, or RT_ERR_ARG with a message. */
+ * neither. Zeroes the counters. Returns 0, or RT_ERR_ARG with the command
+ * line's message for a value out of its range (the page's own for a size
+ * above 1024 x 768). */
 FT_EXPORT(ft_begin) int ft_begin(int which, int width, int height, int spp,
                                  int depth, int adaptive, int draft);
 
