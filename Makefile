@@ -8,6 +8,7 @@
 #   make firmware BOARD=an385 [SCENE=... WIDTH=... HEIGHT=... SPP=...]
 #   make qemu     BOARD=an385 [same]     make size BOARD=an385
 #   make SANITIZE=1 test                 host tests under ASan + UBSan
+#   make web        the page in build/web/ (WebAssembly); make web-serve
 #
 # V=1 shows full command lines; `make print-VAR` prints a variable.
 # Build output goes under build/<target>/ only.
@@ -45,6 +46,7 @@ include mk/test.mk
 -include mk/accuracy.mk
 -include mk/oled.mk
 -include mk/profile.mk
+-include mk/web.mk
 
 .PHONY: all clean print-%
 all: $(FIXTRACE)
