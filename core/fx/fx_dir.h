@@ -247,12 +247,6 @@ static inline int32_t fx_unit_clamp(int32_t v)
  * rare vector that needs it. */
 fx_dir3 fx_d3_clamp(int32_t x, int32_t y, int32_t z);
 
-/* One component of fx_d3_renorm: c (1 - e / 2), kept within +-1. */
-static inline int32_t fx_renorm_c(int32_t c, int32_t e)
-{
-    return fx_unit_clamp(c - fx_renorm_p(c, e));
-}
-
 /* Unit vector along u, a vector already within 2^-15 of unit length (a
  * mirror direction, a sphere's scaled offset): one Newton step u (3 -
  * |u|^2) / 2, which leaves an error of about (|u| - 1)^2, for a fraction
@@ -271,30 +265,20 @@ static inline fx_dir3 fx_d3_renorm(fx_dir3 u)
     const uint64_t lim = (uint64_t)1 << (2 * FX_UBITS - 15);
     if (s + lim >= 2 * lim + ((uint64_t)1 << FX_UBITS))
         return fx_d3_normalize(fx_d3_raw(u));
-    /* On the M0, e from the words of t = s + L, which the test forms
-     * anyway, less L / 2^FX_UBITS: L is a multiple of 2^FX_UBITS. With a
-     * 64-bit multiply, s itself is cheaper. */
-    const uint64_t t = FX_SOFT_MUL64 ? s + lim : s;
-    const int32_t e = (int32_t)((((uint32_t)t >> FX_UBITS) |
-                                 ((uint32_t)(t >> 32) << (32 - FX_UBITS))) -
-                                (FX_SOFT_MUL64 ? (uint32_t)(lim >> FX_UBITS)
-                                               : 0u));
-    if (!FX_SOFT_MUL64) {
-        /* One test for the three clamps, which a renormalised vector
-         * nearly never needs: each c - p within [-1, 1) is one unsigned
-         * compare of the biased value (wrapping), and 2 FX_UONE is a
-         * power of two, so the three can be or-ed together. */
-        const int32_t x = u.x - fx_renorm_p(u.x, e);
-        const int32_t y = u.y - fx_renorm_p(u.y, e);
-        const int32_t z = u.z - fx_renorm_p(u.z, e);
-        if ((((uint32_t)x + (uint32_t)FX_UONE) |
-             ((uint32_t)y + (uint32_t)FX_UONE) |
-             ((uint32_t)z + (uint32_t)FX_UONE)) < 2u * (uint32_t)FX_UONE)
-            return fx_d3(x, y, z);
-        return fx_d3_clamp(x, y, z);
-    }
-    return fx_d3(fx_renorm_c(u.x, e), fx_renorm_c(u.y, e),
-                 fx_renorm_c(u.z, e));
+    const int32_t e = (int32_t)(((uint32_t)s >> FX_UBITS) |
+                                ((uint32_t)(s >> 32) << (32 - FX_UBITS)));
+    /* One test for the three clamps, which a renormalised vector nearly
+     * never needs: each c - p within [-1, 1) is one unsigned compare of
+     * the biased value (wrapping), and 2 FX_UONE is a power of two, so the
+     * three can be or-ed together. */
+    const int32_t x = u.x - fx_renorm_p(u.x, e);
+    const int32_t y = u.y - fx_renorm_p(u.y, e);
+    const int32_t z = u.z - fx_renorm_p(u.z, e);
+    if ((((uint32_t)x + (uint32_t)FX_UONE) |
+         ((uint32_t)y + (uint32_t)FX_UONE) |
+         ((uint32_t)z + (uint32_t)FX_UONE)) < 2u * (uint32_t)FX_UONE)
+        return fx_d3(x, y, z);
+    return fx_d3_clamp(x, y, z);
 }
 
 /* Unit vector along a x b, from the exact 64-bit cross product (any
