@@ -300,10 +300,9 @@ rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
             uint8_t rgb8[3] = { c[0], c[1], c[2] };
             if (contrast > o->adaptive)
                 pixel(tr, wk, cfn, &rs, o, x, rgb8);
-            else if (RT_STATS && RT_HAS_DRAFT && wk->stats &&
-                     o->draft &&
-                     ((flags[(unsigned)y % 3u][(x - c0) / 8] >> ((x - c0) % 8)) &
-                      1u))
+            else if (RT_STATS && RT_HAS_DRAFT && wk->stats && o->draft &&
+                     ((flags[(unsigned)y % 3u][(x - c0) / 8] >>
+                       ((x - c0) % 8)) & 1u))
                 wk->stats->interpolated++;
             rt_put_pixel(row_buf, o, x0, x, (unsigned)y, rgb8);
         }

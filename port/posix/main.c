@@ -527,7 +527,8 @@ static int render_scene(const cli *c, const rt_scene *scene)
         free(out_path);
         return 1;
     }
-    if (panel >= 0 && image_out_panel(j.out, panel, c->dither, j.x0, j.y0) != 0) {
+    if (panel >= 0 &&
+        image_out_panel(j.out, panel, c->dither, j.x0, j.y0) != 0) {
         image_out_abort(j.out);
         free(out_path);
         return cli_error("%s: --format %s writes .pbm, .pgm, .pnm, .ppm, "
@@ -580,7 +581,8 @@ static int render_scene(const cli *c, const rt_scene *scene)
                 c->reference ? ", reference" : "");
     }
     if (c->stats) {
-        const uint64_t pixels = (uint64_t)(j.x1 - j.x0) * (uint64_t)(j.y1 - j.y0);
+        const uint64_t pixels =
+            (uint64_t)(j.x1 - j.x0) * (uint64_t)(j.y1 - j.y0);
         fprintf(stderr, "pixels %llu\n", (unsigned long long)pixels);
         fprintf(stderr, "primary_rays %llu\n",
                 (unsigned long long)j.stats.primary);
