@@ -182,9 +182,10 @@ static void row_1spp(const rt_tracer *tr, rt_work *wk, row_spans *rs,
      * them all); a column none covers needs no ray: rt_trace_camera
      * would return the background. */
     rt_span all[ACTIVE_MAX];
-    const unsigned n_all = rs->hit.count;
+    unsigned n_all = 0; /* the spans in all[]: none when there are more */
     int32_t next = INT32_MAX;
-    if (n_all <= ACTIVE_MAX) {
+    if (rs->hit.count <= ACTIVE_MAX) {
+        n_all = rs->hit.count;
         for (unsigned k = 0; k < n_all; k++)
             all[k] = rs->hit.span[k];
         next = lo;

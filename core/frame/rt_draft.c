@@ -330,7 +330,7 @@ static void between(rt_draft *d, unsigned x, unsigned m,
         unsigned sum = m / 2; /* rounded to nearest */
         for (unsigned i = 0; i < m; i++)
             sum += nb[i]->rgb[ch];
-        e->rgb[ch] = (uint8_t)(sum / m);
+        e->rgb[ch] = (uint8_t)(sum >> (m / 2)); /* m is 2 or 4 */
     }
     e->interp = 1;
     e->obj = a->obj;

@@ -218,10 +218,9 @@ static int write_panel(image_out *o, FILE *f)
             src = line;
             n = w;
         } else if (!raw) { /* PBM: 1 is black, the pad bits 0 */
+            const unsigned pad = w % 8 ? 0xFF00u >> (w % 8) : 0xFFu;
             for (size_t i = 0; i < n; i++)
-                line[i] = (uint8_t)~out[i];
-            if (w % 8)
-                line[n - 1] &= (uint8_t)(0xFF00u >> (w % 8));
+                line[i] = (uint8_t)(~out[i] & (i + 1 < n ? 0xFFu : pad));
             src = line;
         }
         if (fwrite(src, 1, n, f) != n)

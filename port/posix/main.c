@@ -516,9 +516,10 @@ static int render_scene(const cli *c, const rt_scene *scene)
         return 2;
     }
     if (panel < 0 && image_kind_of(path) == IMAGE_PANEL_PNM) {
+        cli_error("%s: a .pbm or .pgm output needs --format mono, "
+                  "mono-page or grey4", path);
         free(out_path);
-        return cli_error("%s: a .pbm or .pgm output needs --format mono, "
-                         "mono-page or grey4", path);
+        return 2;
     }
     j.out = image_out_open(path, j.x1 - j.x0, j.y1 - j.y0, j.opt.format,
                            c->jobs > 1, err, sizeof err);
@@ -530,9 +531,10 @@ static int render_scene(const cli *c, const rt_scene *scene)
     if (panel >= 0 &&
         image_out_panel(j.out, panel, c->dither, j.x0, j.y0) != 0) {
         image_out_abort(j.out);
+        cli_error("%s: --format %s writes .pbm, .pgm, .pnm, .ppm, .raw, "
+                  ".bin or - (not PNG or .h)", path, c->format);
         free(out_path);
-        return cli_error("%s: --format %s writes .pbm, .pgm, .pnm, .ppm, "
-                         ".raw, .bin or - (not PNG or .h)", path, c->format);
+        return 2;
     }
     if (j.progress &&
         progress_eta_init(&j.eta, scene, &j.opt, j.render) != 0)
