@@ -1,8 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * rt_render: the core's one boundary to a platform. The caller owns the
- * scene, a row buffer of rt_row_bytes() bytes and a callback; the renderer
- * fills one scanline at a time and hands it over. There is no frame buffer.
+ * scene, a row buffer (rt_buffer_bytes(), or rt_window_bytes() for a
+ * window of the frame) and a callback; the renderer fills one scanline at
+ * a time, whole or the window's part, and hands it over. There is no
+ * frame buffer.
  */
 #ifndef RT_RENDER_H
 #define RT_RENDER_H
@@ -10,9 +12,10 @@
 #include <stddef.h>
 #include "rt_options.h"
 
-/* Receives finished row y. `row` holds rt_row_bytes() bytes and belongs to
- * the caller that passed it to rt_render_rows(); it is valid only until the
- * callback returns. Return 0 to go on, non-zero to stop the render. */
+/* Receives finished row y. `row` holds nbytes bytes, rt_row_bytes() (or a
+ * window's row, rt_render_window()), and belongs to the caller that passed
+ * it to rt_render_rows(); it is valid only until the callback returns.
+ * Return 0 to go on, non-zero to stop the render. */
 typedef int (*rt_row_fn)(void *ctx, int y, const uint8_t *row, size_t nbytes);
 
 /* Fills *o from the scene's defaults (size, spp, depth), RGB888. */
@@ -53,15 +56,16 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
  * x1 <= width, 0 <= y0 <= y1 <= height) into row_buf
  * (rt_window_bytes(o, x1 - x0) bytes), calling fn after each row with
  * its x1 - x0 pixels, column x0 first, in o->format: y is the frame's
- * row, nbytes rt_window_bytes' row part. Every pixel has the bytes of
+ * row, nbytes (x1 - x0) * 3 or * 2. Every pixel has the bytes of
  * the same pixel in a full render, at any spp, with adaptive
  * anti-aliasing, drafts and dithering: the neighbours those look at
  * outside the window are computed, not emitted. So tiles and dirty
  * rectangles can be rendered one at a time and sent where they go. Memory
- * is O(x1 - x0); the time per pixel is a full render's, plus the margin
- * (one column a side for adaptive anti-aliasing, 2^RT_DRAFT_LEVELS - 1
- * columns and rows for a draft's lattice). Returns as rt_render_rows(),
- * and RT_ERR_ARG for an empty or out-of-frame window. */
+ * is O(x1 - x0); the time is that of the window's pixels plus its margin:
+ * centre samples a row and a column past each side with adaptive
+ * anti-aliasing, a draft's lattice up to 2^RT_DRAFT_LEVELS - 1 rows and
+ * columns away. Returns as rt_render_rows(), and RT_ERR_ARG for an empty
+ * or out-of-frame window. */
 rt_status rt_render_window(const rt_scene *s, const rt_options *o, int x0,
                            int y0, int x1, int y1, uint8_t *row_buf,
                            rt_row_fn fn, void *ctx, rt_stats *stats);
