@@ -110,6 +110,11 @@ static void test_pages(void)
     CHECK_EQ(convert(&p, 7, v, 2), 2);
     CHECK_EQ(out[0], 0xE0);
     CHECK_EQ(out[1], 0xE0);
+    /* A row of another page before this one ended starts that page. */
+    CHECK_EQ(convert(&p, 11, v, 2), 0);
+    CHECK_EQ(convert(&p, 25, v, 2), 0);
+    CHECK_EQ(rt_panel_flush(&p), 2);
+    CHECK_EQ(out[0], 0x02); /* row 25 alone: bit 1 of page 3 */
 }
 
 static void test_grey(void)

@@ -42,6 +42,7 @@ rt_status rt_panel_init(rt_panel *p, unsigned format, unsigned dither,
     p->x0 = (uint16_t)x0;
     p->width = (uint16_t)width;
     p->pending = 0;
+    p->page = 0;
     p->out = out;
     p->err = err;
     for (size_t i = 0; i < rt_panel_err_count(dither, width); i++)
@@ -93,9 +94,10 @@ size_t rt_panel_row(rt_panel *p, unsigned y, const uint8_t *rgb)
     const unsigned w = p->width;
     const int page = p->format == RT_PANEL_MONO_PAGE;
     /* A fresh row, or a fresh page: start from zero bits. */
-    if (!page || y % 8u == 0 || !p->pending)
+    if (!page || !p->pending || y / 8u != p->page)
         for (size_t i = 0; i < rt_panel_out_bytes(p->format, w); i++)
             p->out[i] = 0;
+    p->page = (uint16_t)(y / 8u);
     /* Error diffusion: err[j + 1] holds pixel j's error from the row
      * above, times 16; it is replaced by the next row's once pixel j + 1
      * has given its share (the three below-shares wait in nb[]). */

@@ -50,8 +50,9 @@ typedef enum {
      * 8 p .. 8 p + 7; its width bytes are the columns, bit k of a byte
      * the page's row k (bit 0 at the top). A page is handed over when
      * its row 7 has come, or by rt_panel_flush() at the end; rows of a
-     * page that never came are 0. SSD1306, SH1106 and the like, in
-     * horizontal or page addressing. */
+     * page that never came are 0, and a row of another page starts that
+     * page afresh. SSD1306, SH1106 and the like, in horizontal or page
+     * addressing. */
     RT_PANEL_MONO_PAGE,
     /* 4 bits a pixel, two a byte: (width + 1) / 2 bytes a row, the first
      * of each pair in the high nibble, a missing last one 0. SSD0323,
@@ -74,7 +75,8 @@ typedef struct {
     uint8_t format, dither; /* rt_panel_format, rt_panel_dither */
     uint16_t x0;            /* the frame column of a row's first pixel */
     uint16_t width;         /* pixels a row */
-    uint8_t pending;        /* MONO_PAGE: out holds part of a page */
+    uint8_t pending;        /* MONO_PAGE: out holds part of a page, */
+    uint16_t page;          /* this one (frame rows 8 page ..) */
     uint8_t *out;           /* rt_panel_out_bytes() */
     int16_t *err;           /* DIFFUSION: rt_panel_err_count() */
 } rt_panel;
