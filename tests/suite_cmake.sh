@@ -68,7 +68,8 @@ if cmake -S "$SRC" -B "$tmp/lib" -DCMAKE_INSTALL_PREFIX="$prefix" \
     missing=""
     for f in include/fixtrace/rt_render.h include/fixtrace/rt_parse.h \
         include/fixtrace/rt_scene.h include/fixtrace/rt_config.h \
-        include/fixtrace/fx_math.h lib/libfixtrace.a \
+        include/fixtrace/fx_math.h include/fixtrace/rt_panel.h \
+        lib/libfixtrace.a \
         lib/cmake/fixtrace/fixtraceConfig.cmake \
         lib/cmake/fixtrace/fixtraceConfigVersion.cmake \
         lib/pkgconfig/fixtrace.pc; do
@@ -76,7 +77,7 @@ if cmake -S "$SRC" -B "$tmp/lib" -DCMAKE_INSTALL_PREFIX="$prefix" \
     done
     [ -z "$missing" ] && ok || bad "the install lacks:$missing"
     extra=$(cd "$prefix" && ls include/fixtrace | grep -vxE \
-        'fx_dir.h|fx_math.h|fx_vec.h|rt_config.h|rt_features.h|rt_parse.h|rt_render.h|rt_scene.h')
+        'fx_dir.h|fx_math.h|fx_vec.h|rt_config.h|rt_features.h|rt_options.h|rt_panel.h|rt_parse.h|rt_render.h|rt_scene.h')
     [ -z "$extra" ] && ok || bad "the install has internal headers: $extra"
     [ ! -e "$prefix/include/rt_render.h" ] && ok ||
         bad "headers installed straight into include/"

@@ -7,6 +7,10 @@
 # - embed_example.c, linked with the core on the host and given a fake SPI
 #   display, sends the right window commands and a 160x128 RGB565 picture
 #   equal, byte for byte, to `fixtrace --format rgb565be --dither`;
+# - tiles_example.c, on a fake panel with DMA, draws the screen tile by
+#   tile and redraws a dirty rectangle, both equal to that render; and
+#   oled_example.c sends the SSD1306 pages of `fixtrace --format
+#   mono-page --dither diffusion`; embedding.md shows both as they are;
 # - every statement shown in docs/scene-format.md before its Errors
 #   section parses, and every keyword and field the parser knows (asked
 #   from the parser's own error messages) has an example there;
@@ -191,6 +195,189 @@ if $CC -std=c99 -O1 $CORE_INC -Idocs/examples "$tmp/fake_lcd.c" core/*/*.c \
     fi
 else
     bad "embed_example.c does not build on the host: $(head -c 600 "$tmp/err")"
+fi
+
+# docs/embedding.md quotes the tile and OLED examples too.
+for ex in tiles_example.c oled_example.c; do
+    awk -v b="<!-- begin docs/examples/$ex -->" \
+        -v e="<!-- end docs/examples/$ex -->" '
+        $0 == b {on = 1; next}
+        $0 == e {on = 0}
+        on && !/^```/' docs/embedding.md >"$tmp/quoted.c"
+    if [ ! -s "$tmp/quoted.c" ]; then
+        bad "docs/embedding.md does not quote docs/examples/$ex"
+    elif cmp -s "$tmp/quoted.c" "docs/examples/$ex"; then
+        ok
+    else
+        bad "docs/embedding.md's copy of $ex differs from the file:"
+        diff "docs/examples/$ex" "$tmp/quoted.c" | head -n 20
+    fi
+done
+
+# --- tiles_example.c runs on the host ------------------------------------
+# A fake panel with a frame of its own: CASET and RASET set the window,
+# RAMWR's pixels fill it. dma_start() only notes the transfer; dma_wait()
+# copies it then, so a tile changed while "in flight" shows, as does a
+# transfer started before the last one was waited for. The whole screen
+# must equal fixtrace's render; then a rectangle of it is spoilt and
+# redrawn (a dirty-rectangle update), and the screen must equal it again.
+cat >"$tmp/fake_tiles.c" <<'EOF'
+#include <stdio.h>
+#include <string.h>
+#include "tiles_example.c"
+
+static uint8_t fb[LCD_H][LCD_W][2];
+static int win[4], cmd, narg, errors;
+static uint8_t arg[4];
+static const uint8_t *flight;
+static size_t flight_n;
+
+void lcd_command(uint8_t c)
+{
+    if (flight)
+        errors++; /* a command while pixels are still on the bus */
+    cmd = c;
+    narg = 0;
+}
+
+void spi_write(const uint8_t *d, size_t n)
+{
+    for (size_t i = 0; i < n && narg < 4; i++)
+        arg[narg++] = d[i];
+    if (narg == 4 && (cmd == 0x2A || cmd == 0x2B)) {
+        int *w = win + (cmd == 0x2A ? 0 : 2);
+        w[0] = arg[0] << 8 | arg[1];
+        w[1] = arg[2] << 8 | arg[3];
+    }
+}
+
+void dma_start(const uint8_t *d, size_t n)
+{
+    if (flight || cmd != 0x2C)
+        errors++;
+    flight = d;
+    flight_n = n;
+}
+
+void dma_wait(void)
+{
+    size_t i = 0;
+    if (!flight)
+        return;
+    for (int y = win[2]; y <= win[3]; y++)
+        for (int x = win[0]; x <= win[1]; x++, i += 2)
+            if (i + 1 < flight_n && y < LCD_H && x < LCD_W)
+                memcpy(fb[y][x], flight + i, 2);
+    if (i != flight_n)
+        errors++;
+    flight = NULL;
+}
+
+static int save(const char *path)
+{
+    FILE *f = fopen(path, "wb");
+    if (!f)
+        return 1;
+    fprintf(f, "P6\n%d %d\n255\n", LCD_W, LCD_H);
+    for (int y = 0; y < LCD_H; y++)
+        for (int x = 0; x < LCD_W; x++) {
+            unsigned v = (unsigned)fb[y][x][0] << 8 | fb[y][x][1];
+            unsigned r = v >> 11, g = (v >> 5) & 63, b = v & 31;
+            fputc((int)(r << 3 | r >> 2), f);
+            fputc((int)(g << 2 | g >> 4), f);
+            fputc((int)(b << 3 | b >> 2), f);
+        }
+    return fclose(f) != 0;
+}
+
+int main(int argc, char **argv)
+{
+    rt_parse_error err;
+    if (argc != 4)
+        return 2;
+    FILE *f = fopen(argv[1], "wb"); /* the scene, for the CLI to render */
+    fputs(scene_text, f);
+    fclose(f);
+    if (tiles_init(&err) != 0 || draw_rect(0, 0, LCD_W, LCD_H) != 0 ||
+        save(argv[2]) != 0)
+        return 1;
+    for (int y = 70; y < 133; y++) /* spoil a rectangle, then redraw it */
+        for (int x = 101; x < 172; x++)
+            fb[y][x][0] = fb[y][x][1] = 0xA5;
+    if (draw_rect(101, 70, 172, 133) != 0 || save(argv[3]) != 0)
+        return 1;
+    if (errors)
+        fprintf(stderr, "%d DMA or window errors\n", errors);
+    return errors != 0;
+}
+EOF
+# shellcheck disable=SC2046
+if $CC -std=c99 -O1 $CORE_INC -Idocs/examples "$tmp/fake_tiles.c" \
+    core/*/*.c -o "$tmp/fake_tiles" 2>"$tmp/err"; then
+    if "$tmp/fake_tiles" "$tmp/tiles.scene" "$tmp/tiles.ppm" \
+        "$tmp/dirty.ppm" 2>"$tmp/err" &&
+        "$FT" -q --format rgb565be --dither -W 320 -H 240 \
+            -o "$tmp/cli.ppm" "$tmp/tiles.scene" 2>>"$tmp/err"; then
+        cmp -s "$tmp/cli.ppm" "$tmp/tiles.ppm" && ok ||
+            bad "tiles_example.c's screen differs from fixtrace's render"
+        cmp -s "$tmp/cli.ppm" "$tmp/dirty.ppm" && ok ||
+            bad "tiles_example.c's dirty-rectangle redraw differs"
+    else
+        bad "tiles_example.c on a fake display: $(head -c 300 "$tmp/err")"
+    fi
+else
+    bad "tiles_example.c does not build on the host: $(head -c 600 "$tmp/err")"
+fi
+
+# --- oled_example.c runs on the host -------------------------------------
+# Its pages, as a fake SSD1306 receives them, must be the bytes of
+# `fixtrace --format mono-page --dither diffusion`, page by page in order.
+cat >"$tmp/fake_oled.c" <<'EOF'
+#include <stdio.h>
+#include "oled_example.c"
+
+static uint8_t gram[OLED_H / 8][OLED_W];
+static unsigned next_page, errors;
+
+void oled_page(unsigned p, const uint8_t *bytes, size_t n)
+{
+    if (p != next_page++ || p >= OLED_H / 8 || n != OLED_W) {
+        errors++;
+        return;
+    }
+    for (size_t i = 0; i < n; i++)
+        gram[p][i] = bytes[i];
+}
+
+int main(int argc, char **argv)
+{
+    rt_parse_error err;
+    if (argc != 3)
+        return 2;
+    FILE *f = fopen(argv[1], "wb");
+    fputs(scene_text, f);
+    fclose(f);
+    if (render_to_oled(&err) != 0 || errors || next_page != OLED_H / 8)
+        return 1;
+    f = fopen(argv[2], "wb");
+    fwrite(gram, 1, sizeof gram, f);
+    return fclose(f) != 0;
+}
+EOF
+# shellcheck disable=SC2046
+if $CC -std=c99 -O1 $CORE_INC -Idocs/examples "$tmp/fake_oled.c" \
+    core/*/*.c -o "$tmp/fake_oled" 2>"$tmp/err"; then
+    if "$tmp/fake_oled" "$tmp/oled.scene" "$tmp/oled.raw" 2>"$tmp/err" &&
+        "$FT" -q --format mono-page --dither diffusion -W 128 -H 64 \
+            -o "$tmp/cli.raw" "$tmp/oled.scene" 2>>"$tmp/err"; then
+        cmp -s "$tmp/cli.raw" "$tmp/oled.raw" && ok ||
+            bad "oled_example.c's pages differ from fixtrace --format" \
+                "mono-page --dither diffusion"
+    else
+        bad "oled_example.c on a fake panel: $(head -c 300 "$tmp/err")"
+    fi
+else
+    bad "oled_example.c does not build on the host: $(head -c 600 "$tmp/err")"
 fi
 
 # --- docs/scene-format.md -----------------------------------------------------

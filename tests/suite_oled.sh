@@ -5,7 +5,8 @@
 # 128x64 under QEMU, headless; tools/qemu_screen.py (make qemu) waits for
 # the firmware's "display_done" line and takes the monitor's screendump
 # (512x256, each panel pixel 4x4). That picture must equal, pixel for
-# pixel, the host's render of the same scene mapped by the same rt_grey4()
+# pixel, the host's render of the same scene mapped by the same converter,
+# rt_panel.h's RT_PANEL_GREY4 with the ordered dither
 # (tools/grey4.c -s 4, drawing level L as QEMU's ssd0323 model does:
 # grey 17 * L). The image sent through semihosting must equal the host's
 # as on every board, the run must report its figures, and the screen must

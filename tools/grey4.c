@@ -2,8 +2,9 @@
 /*
  * grey4: what a 4-bit grey panel shows for an RGB888 image, as the host
  * sees it. Reads a P6 PPM (for example `fixtrace -W 128 -H 64` output),
- * maps every pixel to a level 0..15 with rt_grey4() (core/frame/rt_grey.c, the
- * same function the LM3S6965 firmware sends to its OLED) and writes a P6
+ * maps every pixel to a level 0..15 with the library's panel converter
+ * (core/frame/rt_panel.h, RT_PANEL_GREY4 with the ordered dither: what
+ * the LM3S6965 firmware sends to its OLED) and writes a P6
  * PPM in which level L is the grey 17 * L, each pixel drawn SCALE x SCALE.
  *
  *   grey4 [-s SCALE] IN.ppm OUT.ppm
@@ -18,12 +19,12 @@
 #include <string.h>
 
 #include "ppm.h"
-#include "rt_grey.h"
+#include "rt_panel.h"
 
 static int usage(void)
 {
     fprintf(stderr, "usage: grey4 [-s SCALE] IN.ppm OUT.ppm\n"
-                    "  maps IN to 16 grey levels (core/frame/rt_grey.h) and writes"
+                    "  maps IN to 16 grey levels (core/frame/rt_panel.h) and writes"
                     " them as greys 17 * L,\n  each pixel SCALE x SCALE "
                     "(1..16, default 1)\n");
     return 2;
@@ -56,18 +57,21 @@ int main(int argc, char **argv)
         ppm_free(&in);
         return 1;
     }
-    uint8_t *levels = malloc((size_t)in.width);
-    if (!levels) {
+    uint8_t *levels = malloc((size_t)in.width); /* two levels a byte */
+    rt_panel panel;
+    if (!levels || rt_panel_init(&panel, RT_PANEL_GREY4, RT_PANEL_ORDERED, 0,
+                                 (unsigned)in.width, levels, NULL) != RT_OK) {
         fprintf(stderr, "grey4: out of memory\n");
         return 1;
     }
     size_t out_row = (size_t)out.width * 3;
     for (int y = 0; y < in.height; y++) {
-        rt_grey4_row(in.data + (size_t)y * in.width * 3, (unsigned)in.width,
-                     (unsigned)y, levels);
+        rt_panel_row(&panel, (unsigned)y,
+                     in.data + (size_t)y * in.width * 3);
         uint8_t *dst = out.data + (size_t)y * scale * out_row;
         for (int x = 0; x < in.width; x++) {
-            uint8_t g = (uint8_t)(levels[x] * 17);
+            unsigned l = x % 2 ? levels[x / 2] & 15u : levels[x / 2] >> 4;
+            uint8_t g = (uint8_t)(l * 17);
             memset(dst + (size_t)x * scale * 3, g, (size_t)scale * 3);
         }
         for (int k = 1; k < scale; k++)

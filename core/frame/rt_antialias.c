@@ -113,15 +113,17 @@ static void pixel(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
             fx_to_u8((fx_t)(spp <= 1 ? sum[k] : (sum[k] + spp / 2) / spp));
 }
 
-/* Pixels x0 <= x < x1 of row y in the background's bytes bg. */
-RT_NOINLINE static void put_background(uint8_t *row, rt_work *wk, const rt_options *o,
-                           unsigned y, int32_t x0, int32_t x1,
-                           const uint8_t bg[3])
+/* Pixels x0 <= x < x1 of row y (whose first pixel is column base) in
+ * the background's bytes bg. */
+RT_NOINLINE static void put_background(uint8_t *row, rt_work *wk,
+                                       const rt_options *o, unsigned y,
+                                       unsigned base, int32_t x0, int32_t x1,
+                                       const uint8_t bg[3])
 {
     if (RT_STATS && wk->stats && x1 > x0)
         wk->stats->primary += (unsigned)(x1 - x0);
     for (int32_t x = x0; x < x1; x++)
-        rt_put_pixel(row, o, (unsigned)x, y, bg);
+        rt_put_pixel(row, o, base, (unsigned)x, y, bg);
 }
 
 /* A row of at most this many spans is walked with only the spans that
@@ -157,19 +159,19 @@ RT_NOINLINE static int32_t active_spans(rt_row_spans *act, const rt_span *all,
  * of a general loop cost more than the walk itself saves. */
 static void row_1spp(const rt_tracer *tr, rt_work *wk, row_spans *rs,
                      const rt_cam_frame *cf, const rt_options *o,
-                     unsigned y, uint8_t *row)
+                     unsigned y, unsigned x0, unsigned x1, uint8_t *row)
 {
-    const int32_t w = (int32_t)o->width;
-    const int32_t lo = rs->lo > 0 ? rs->lo : 0;
+    const int32_t w = (int32_t)x1, b = (int32_t)x0;
+    const int32_t lo = rs->lo > b ? rs->lo : b;
     const int32_t hi = rs->hi < w ? rs->hi : w - 1;
     const rt_rgb bgc = tr->scene->background;
     const uint8_t bg[3] = { fx_to_u8(bgc.r), fx_to_u8(bgc.g),
                             fx_to_u8(bgc.b) }; /* as pixel() */
     if (lo > hi) {
-        put_background(row, wk, o, y, 0, w, bg);
+        put_background(row, wk, o, y, x0, b, w, bg);
         return;
     }
-    put_background(row, wk, o, y, 0, lo, bg);
+    put_background(row, wk, o, y, x0, b, lo, bg);
     rt_cam_walk cw;
     rt_cam_walk_init(&cw, cf, &rs->base[0], o->width, (unsigned)lo,
                      (unsigned)hi);
@@ -180,9 +182,10 @@ static void row_1spp(const rt_tracer *tr, rt_work *wk, row_spans *rs,
      * them all); a column none covers needs no ray: rt_trace_camera
      * would return the background. */
     rt_span all[ACTIVE_MAX];
-    const unsigned n_all = rs->hit.count;
+    unsigned n_all = 0; /* the spans in all[]: none when there are more */
     int32_t next = INT32_MAX;
-    if (n_all <= ACTIVE_MAX) {
+    if (rs->hit.count <= ACTIVE_MAX) {
+        n_all = rs->hit.count;
         for (unsigned k = 0; k < n_all; k++)
             all[k] = rs->hit.span[k];
         next = lo;
@@ -199,27 +202,28 @@ static void row_1spp(const rt_tracer *tr, rt_work *wk, row_spans *rs,
         }
         const uint8_t rgb8[3] = { fx_to_u8(c.r), fx_to_u8(c.g),
                                   fx_to_u8(c.b) }; /* as pixel() */
-        rt_put_pixel(row, o, (unsigned)x, y, rgb8);
+        rt_put_pixel(row, o, x0, (unsigned)x, y, rgb8);
         if (x == hi)
             break;
         rt_cam_walk_step(&cw);
     }
-    put_background(row, wk, o, y, hi + 1, w, bg);
+    put_background(row, wk, o, y, x0, hi + 1, w, bg);
 }
 
 void rt_aa_row(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
-               const rt_options *o, unsigned y, uint8_t *row)
+               const rt_options *o, unsigned y, unsigned x0, unsigned x1,
+               uint8_t *row)
 {
     row_spans rs;
     row_setup(&rs, tr, cf, o, y);
     if ((RT_HAS_SUPERSAMPLING ? cf->n : 1) == 1) {
-        row_1spp(tr, wk, &rs, cf, o, y, row);
+        row_1spp(tr, wk, &rs, cf, o, y, x0, x1, row);
         return;
     }
-    for (unsigned x = 0; x < o->width; x++) {
+    for (unsigned x = x0; x < x1; x++) {
         uint8_t rgb8[3];
         pixel(tr, wk, cf, &rs, o, x, rgb8);
-        rt_put_pixel(row, o, x, y, rgb8);
+        rt_put_pixel(row, o, x0, x, y, rgb8);
     }
 }
 
@@ -228,11 +232,14 @@ void rt_aa_row(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
  * o->adaptive (in 8-bit levels, any channel) gets the full n x n grid. The
  * centre samples of rows y-1..y+1 live in the scratch part of row_buf, so a
  * band computes the rows around it too and any banding gives the same
- * bytes. With o->draft the centre samples are a draft render's rows
- * (rt_draft.h), whose scratch follows. */
+ * bytes. Likewise a window's centre samples reach one column past each
+ * side (c0..c1), which are computed and not emitted. With o->draft the
+ * centre samples are a draft render's rows (rt_draft.h), whose scratch
+ * follows. */
 rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
-                         const rt_cam_frame *cfn, const rt_options *o, int y0,
-                         int y1, uint8_t *row_buf, rt_row_fn fn, void *ctx)
+                         const rt_cam_frame *cfn, const rt_options *o,
+                         unsigned x0, int y0, unsigned x1, int y1,
+                         uint8_t *row_buf, rt_row_fn fn, void *ctx)
 {
     if (!RT_HAS_SUPERSAMPLING) /* rt_render_rows does not call it then */
         return RT_ERR_UNSUPPORTED;
@@ -241,17 +248,20 @@ rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
     row_spans rs;
     rt_cam_setup(&cf1_store, tr->scene, o->width, o->height, 1);
     const unsigned w = o->width;
+    /* The columns whose centre samples the window's pixels look at. */
+    const unsigned c0 = x0 > 0 ? x0 - 1 : 0, c1 = x1 < w ? x1 : w - 1;
+    const unsigned nc = c1 - c0 + 1;
     uint8_t *slot[3], *flags[3];
     int slot_y[3] = { -1, -1, -1 };
     rt_draft draft; /* with o->draft: the centre samples are a draft */
     for (int k = 0; k < 3; k++)
-        slot[k] = row_buf + rt_pixel_row_bytes(o) + (size_t)k * 3u * w;
+        slot[k] = row_buf + rt_pixel_bytes(o, x1 - x0) + (size_t)k * 3u * nc;
     if (RT_HAS_DRAFT && o->draft) {
-        uint8_t *scratch = slot[2] + 3u * w;
-        rt_draft_init(&draft, tr, wk, cf1, o, scratch);
+        uint8_t *scratch = slot[2] + 3u * nc;
+        rt_draft_init(&draft, tr, wk, cf1, o, c0, c1, scratch);
         for (int k = 0; k < 3; k++)
-            flags[k] = scratch + rt_draft_slot_bytes(o) +
-                       (size_t)k * rt_draft_flag_bytes(o);
+            flags[k] = scratch + rt_draft_slot_bytes(o, nc) +
+                       (size_t)k * rt_draft_flag_bytes(nc);
     }
     for (int y = y0; y < y1; y++) {
         /* Centre samples of rows y-1, y, y+1 (clamped to the image). */
@@ -264,23 +274,24 @@ rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
                 rt_draft_row(&draft, (unsigned)yy, slot[k], flags[k]);
             } else if (slot_y[k] != yy) {
                 row_setup(&rs, tr, cf1, o, (unsigned)yy);
-                for (unsigned x = 0; x < w; x++)
-                    pixel(tr, wk, cf1, &rs, o, x, slot[k] + 3 * x);
+                for (unsigned x = c0; x <= c1; x++)
+                    pixel(tr, wk, cf1, &rs, o, x, slot[k] + 3 * (x - c0));
             }
             slot_y[k] = yy;
             near[d + 1] = slot[k];
         }
         row_setup(&rs, tr, cfn, o, (unsigned)y);
-        for (unsigned x = 0; x < w; x++) {
-            const uint8_t *c = near[1] + 3 * x;
+        for (unsigned x = x0; x < x1; x++) {
+            const uint8_t *c = near[1] + 3 * (x - c0);
             unsigned contrast = 0;
             for (int d = 0; d < 3; d++) {
                 for (int dx = -1; dx <= 1; dx++) {
                     unsigned xx = (x == 0 && dx < 0)       ? 0
                                   : (x + 1 == w && dx > 0) ? x
                                                            : x + (unsigned)dx;
+                    const uint8_t *p = near[d] + 3 * (xx - c0);
                     for (int ch = 0; ch < 3; ch++) {
-                        int diff = (int)near[d][3 * xx + ch] - (int)c[ch];
+                        int diff = (int)p[ch] - (int)c[ch];
                         unsigned a = (unsigned)(diff < 0 ? -diff : diff);
                         if (a > contrast)
                             contrast = a;
@@ -290,13 +301,13 @@ rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
             uint8_t rgb8[3] = { c[0], c[1], c[2] };
             if (contrast > o->adaptive)
                 pixel(tr, wk, cfn, &rs, o, x, rgb8);
-            else if (RT_STATS && RT_HAS_DRAFT && wk->stats &&
-                     o->draft &&
-                     ((flags[(unsigned)y % 3u][x / 8] >> (x % 8)) & 1u))
+            else if (RT_STATS && RT_HAS_DRAFT && wk->stats && o->draft &&
+                     ((flags[(unsigned)y % 3u][(x - c0) / 8] >>
+                       ((x - c0) % 8)) & 1u))
                 wk->stats->interpolated++;
-            rt_put_pixel(row_buf, o, x, (unsigned)y, rgb8);
+            rt_put_pixel(row_buf, o, x0, x, (unsigned)y, rgb8);
         }
-        if (fn(ctx, y, row_buf, rt_pixel_row_bytes(o)) != 0)
+        if (fn(ctx, y, row_buf, rt_pixel_bytes(o, x1 - x0)) != 0)
             return RT_ERR_ABORTED;
     }
     return RT_OK;

@@ -23,16 +23,20 @@ typedef struct {
 void rt_aa_row_setup(rt_aa_spans *rs, const rt_tracer *tr,
                      const rt_cam_frame *cf, const rt_options *o, unsigned y);
 
-/* Fills row y (rt_row_bytes(o) bytes) in o->format, each pixel the mean
- * of its cf->n x cf->n samples. */
+/* Fills columns x0 <= x < x1 of row y into row (x1 - x0 pixels, column
+ * x0 first) in o->format, each pixel the mean of its cf->n x cf->n
+ * samples. */
 void rt_aa_row(const rt_tracer *tr, rt_work *wk, const rt_cam_frame *cf,
-               const rt_options *o, unsigned y, uint8_t *row);
+               const rt_options *o, unsigned y, unsigned x0, unsigned x1,
+               uint8_t *row);
 
-/* Rows y0 <= y < y1 with adaptive anti-aliasing (o->adaptive > 0,
- * cfn->n > 1), each handed to fn; row_buf holds rt_buffer_bytes(o). With
- * o->draft > 0 the centre samples come from a draft render. */
+/* Columns x0 <= x < x1 of rows y0 <= y < y1 with adaptive anti-aliasing
+ * (o->adaptive > 0, cfn->n > 1), each row handed to fn; row_buf holds
+ * rt_window_bytes(o, x1 - x0). With o->draft > 0 the centre samples come
+ * from a draft render. */
 rt_status rt_aa_adaptive(const rt_tracer *tr, rt_work *wk,
-                         const rt_cam_frame *cfn, const rt_options *o, int y0,
-                         int y1, uint8_t *row_buf, rt_row_fn fn, void *ctx);
+                         const rt_cam_frame *cfn, const rt_options *o,
+                         unsigned x0, int y0, unsigned x1, int y1,
+                         uint8_t *row_buf, rt_row_fn fn, void *ctx);
 
 #endif /* RT_ANTIALIAS_H */

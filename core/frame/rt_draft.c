@@ -25,6 +25,13 @@
  *
  * Each level keeps two rows ("slots") of entries, ENTRY bytes per column
  * of that level, in the caller's scratch (put_entry: the layout).
+ *
+ * A window of the frame (columns c0..c1 of level 0) needs, on level l,
+ * the columns that its pixels' neighbours reach: level l - 1's range
+ * widened by 2^(l-1) on each side, clamped to the image, so 2^l - 1 in
+ * all. Each entry depends only on its column, its row and the coarser
+ * entries it is between, never on which other columns are computed, so
+ * the window's pixels are those of the full frame.
  */
 #include "rt_draft.h"
 #include "rt_pixel.h"
@@ -65,23 +72,34 @@ static unsigned level_col(unsigned i, unsigned s, unsigned n)
     return i * s < n ? i * s : n - 1;
 }
 
-size_t rt_draft_flag_bytes(const rt_options *o)
+size_t rt_draft_flag_bytes(unsigned n)
 {
-    return ((size_t)o->width + 7) / 8;
+    return ((size_t)n + 7) / 8;
 }
 
-size_t rt_draft_slot_bytes(const rt_options *o)
+/* At most this many columns of spacing s lie within level l's range for
+ * n columns of level 0: it spans n - 1 + 2 (s - 1) columns (the margin
+ * above), which hold (n - 1 + 2 s - 2) / s + 1 multiples of s, and the
+ * image's last column may be one more. The whole row when that is less. */
+static unsigned level_bound(unsigned s, unsigned n, unsigned w)
 {
-    size_t n = 0;
+    const unsigned all = level_count(s, w);
+    const unsigned most = (n - 1u + 2u * s - 2u) / s + 2u;
+    return most < all ? most : all;
+}
+
+size_t rt_draft_slot_bytes(const rt_options *o, unsigned n)
+{
+    size_t b = 0;
     for (unsigned l = 1; l <= RT_DRAFT_LEVELS; l++)
-        n += 2u * ENTRY * level_count(1u << l, o->width);
-    return n;
+        b += 2u * ENTRY * level_bound(1u << l, n, o->width);
+    return b;
 }
 
-size_t rt_draft_bytes(const rt_options *o)
+size_t rt_draft_bytes(const rt_options *o, unsigned n)
 {
-    return rt_draft_slot_bytes(o) + 3u * (size_t)o->width +
-           rt_draft_flag_bytes(o);
+    return rt_draft_slot_bytes(o, n) + 3u * (size_t)n +
+           rt_draft_flag_bytes(n);
 }
 
 /* Entries are stored little-endian: rgb, interp, obj, sig, front, t. */
@@ -118,18 +136,31 @@ static void get_entry(const uint8_t *p, entry *e)
 }
 
 void rt_draft_init(rt_draft *d, const rt_tracer *tr, rt_work *wk,
-                   const rt_cam_frame *cf, const rt_options *o,
-                   uint8_t *scratch)
+                   const rt_cam_frame *cf, const rt_options *o, unsigned c0,
+                   unsigned c1, uint8_t *scratch)
 {
+    const unsigned w = o->width;
+    unsigned a = c0, b = c1; /* level l's range of columns */
     d->tr = tr;
     d->wk = wk;
     d->cf = cf;
     d->o = o;
+    d->first[0] = c0;
+    d->last[0] = c1;
     for (unsigned l = 1; l <= RT_DRAFT_LEVELS; l++) {
+        const unsigned s = 1u << l, h = s / 2;
+        a = a > h ? a - h : 0;
+        b = b + h < w ? b + h : w - 1;
+        /* The first column of the level at or after a, the last at or
+         * before b; none (last < first) when no column lies between. */
+        d->first[l] = level_index(a, s);
+        d->last[l] = b + 1 == w ? level_count(s, w) - 1 : b / s;
+        const unsigned count =
+            d->last[l] + 1 > d->first[l] ? d->last[l] + 1 - d->first[l] : 0;
         for (unsigned k = 0; k < 2; k++) {
             d->slot[l - 1][k] = scratch;
             d->slot_y[l - 1][k] = -1;
-            scratch += ENTRY * level_count(1u << l, o->width);
+            scratch += ENTRY * count;
         }
     }
     d->rs_y = -1;
@@ -299,7 +330,7 @@ static void between(rt_draft *d, unsigned x, unsigned m,
         unsigned sum = m / 2; /* rounded to nearest */
         for (unsigned i = 0; i < m; i++)
             sum += nb[i]->rgb[ch];
-        e->rgb[ch] = (uint8_t)(sum / m);
+        e->rgb[ch] = (uint8_t)(sum >> (m / 2)); /* m is 2 or 4 */
     }
     e->interp = 1;
     e->obj = a->obj;
@@ -318,7 +349,9 @@ static void level_row(rt_draft *d, unsigned l, unsigned y, uint8_t *out,
                       uint8_t *flags)
 {
     const unsigned w = d->o->width, h = d->o->height, s = 1u << l;
-    const unsigned s2 = 2 * s, count = level_count(s, w);
+    const unsigned s2 = 2 * s, first = d->first[l], last = d->last[l];
+    /* Entries of level l + 1 are stored from its first column on. */
+    const unsigned up = l < RT_DRAFT_LEVELS ? d->first[l + 1] : 0;
     uint8_t *ra = 0, *rb = 0; /* rows of level l + 1: above, below */
     int between_rows = 0;
     if (l < RT_DRAFT_LEVELS) {
@@ -331,7 +364,7 @@ static void level_row(rt_draft *d, unsigned l, unsigned y, uint8_t *out,
         }
     }
     setup_row(d, y);
-    for (unsigned i = 0; i < count; i++) {
+    for (unsigned i = first; i <= last; i++) {
         const unsigned x = level_col(i, s, w);
         entry e, nb[4];
         const entry *p[4] = { &nb[0], &nb[1], &nb[2], &nb[3] };
@@ -339,18 +372,18 @@ static void level_row(rt_draft *d, unsigned l, unsigned y, uint8_t *out,
         if (!ra || (!on_col && !halfway)) {
             trace_pixel(d, x, &e, 0); /* top level, or not halfway */
         } else if (!between_rows && on_col) {
-            get_entry(ra + ENTRY * level_index(x, s2), &e);
+            get_entry(ra + ENTRY * (level_index(x, s2) - up), &e);
         } else if (!between_rows) { /* left and right */
-            get_entry(ra + ENTRY * level_index(x - s, s2), &nb[0]);
-            get_entry(ra + ENTRY * level_index(x + s, s2), &nb[1]);
+            get_entry(ra + ENTRY * (level_index(x - s, s2) - up), &nb[0]);
+            get_entry(ra + ENTRY * (level_index(x + s, s2) - up), &nb[1]);
             between(d, x, 2, p, &e);
         } else if (on_col) { /* above and below */
-            get_entry(ra + ENTRY * level_index(x, s2), &nb[0]);
-            get_entry(rb + ENTRY * level_index(x, s2), &nb[1]);
+            get_entry(ra + ENTRY * (level_index(x, s2) - up), &nb[0]);
+            get_entry(rb + ENTRY * (level_index(x, s2) - up), &nb[1]);
             between(d, x, 2, p, &e);
         } else { /* the four diagonal ones */
-            const unsigned i0 = level_index(x - s, s2);
-            const unsigned i1 = level_index(x + s, s2);
+            const unsigned i0 = level_index(x - s, s2) - up;
+            const unsigned i1 = level_index(x + s, s2) - up;
             get_entry(ra + ENTRY * i0, &nb[0]);
             get_entry(ra + ENTRY * i1, &nb[1]);
             get_entry(rb + ENTRY * i0, &nb[2]);
@@ -358,14 +391,15 @@ static void level_row(rt_draft *d, unsigned l, unsigned y, uint8_t *out,
             between(d, x, 4, p, &e);
         }
         if (l > 0) {
-            put_entry(out + ENTRY * i, &e);
+            put_entry(out + ENTRY * (i - first), &e);
         } else {
-            out[3 * x] = e.rgb[0];
-            out[3 * x + 1] = e.rgb[1];
-            out[3 * x + 2] = e.rgb[2];
-            if (x % 8 == 0)
-                flags[x / 8] = 0;
-            flags[x / 8] |= (uint8_t)(e.interp << (x % 8));
+            const unsigned j = x - first; /* level 0: i is the column */
+            out[3 * j] = e.rgb[0];
+            out[3 * j + 1] = e.rgb[1];
+            out[3 * j + 2] = e.rgb[2];
+            if (j % 8 == 0)
+                flags[j / 8] = 0;
+            flags[j / 8] |= (uint8_t)(e.interp << (j % 8));
         }
     }
 }
@@ -389,22 +423,24 @@ void rt_draft_row(rt_draft *d, unsigned y, uint8_t *rgb, uint8_t *flags)
 }
 
 rt_status rt_draft_render(const rt_tracer *tr, rt_work *wk,
-                          const rt_cam_frame *cf, const rt_options *o, int y0,
-                          int y1, uint8_t *row_buf, rt_row_fn fn, void *ctx)
+                          const rt_cam_frame *cf, const rt_options *o,
+                          unsigned x0, int y0, unsigned x1, int y1,
+                          uint8_t *row_buf, rt_row_fn fn, void *ctx)
 {
     rt_draft d;
-    uint8_t *scratch = row_buf + rt_pixel_row_bytes(o);
-    uint8_t *rgb = scratch + rt_draft_slot_bytes(o);
-    uint8_t *flags = rgb + 3u * (size_t)o->width;
-    rt_draft_init(&d, tr, wk, cf, o, scratch);
+    const unsigned n = x1 - x0;
+    uint8_t *scratch = row_buf + rt_pixel_bytes(o, n);
+    uint8_t *rgb = scratch + rt_draft_slot_bytes(o, n);
+    uint8_t *flags = rgb + 3u * (size_t)n;
+    rt_draft_init(&d, tr, wk, cf, o, x0, x1 - 1, scratch);
     for (int y = y0; y < y1; y++) {
         rt_draft_row(&d, (unsigned)y, rgb, flags);
-        for (unsigned x = 0; x < o->width; x++) {
-            rt_put_pixel(row_buf, o, x, (unsigned)y, rgb + 3 * x);
-            if (RT_STATS && wk->stats && ((flags[x / 8] >> (x % 8)) & 1u))
+        for (unsigned j = 0; j < n; j++) {
+            rt_put_pixel(row_buf, o, x0, j + x0, (unsigned)y, rgb + 3 * j);
+            if (RT_STATS && wk->stats && ((flags[j / 8] >> (j % 8)) & 1u))
                 wk->stats->interpolated++;
         }
-        if (fn(ctx, y, row_buf, rt_pixel_row_bytes(o)) != 0)
+        if (fn(ctx, y, row_buf, rt_pixel_bytes(o, n)) != 0)
             return RT_ERR_ABORTED;
     }
     return RT_OK;

@@ -2,8 +2,8 @@
 /*
  * rt_render: the scanline boundary (rt_render.h). It checks the scene and
  * the options, sets up the tracer, and hands over one row at a time. Each
- * row depends only on its own y, so any banding of rows gives the same
- * bytes.
+ * pixel depends only on its own x and y, so any banding of rows, and any
+ * window of columns, gives the same bytes.
  */
 #include "rt_draft.h"
 #include "rt_pixel.h"
@@ -26,14 +26,25 @@ size_t rt_row_bytes(const rt_options *o)
     return rt_pixel_row_bytes(o);
 }
 
-size_t rt_buffer_bytes(const rt_options *o)
+size_t rt_window_bytes(const rt_options *o, unsigned n)
 {
     size_t extra = 0;
-    if (RT_HAS_SUPERSAMPLING && o->adaptive && o->spp > 1)
-        extra = 9u * o->width; /* three rows of 1-spp colours */
-    if (RT_HAS_DRAFT && o->draft)
-        extra += rt_draft_bytes(o);
-    return rt_row_bytes(o) + extra;
+    n = n < 1 ? 1 : (n > o->width ? o->width : n);
+    /* Adaptive anti-aliasing looks one column past each side. */
+    const unsigned nc = n + 2 < o->width ? n + 2 : o->width;
+    if (RT_HAS_SUPERSAMPLING && o->adaptive && o->spp > 1) {
+        extra = 9u * nc; /* three rows of 1-spp colours */
+        if (RT_HAS_DRAFT && o->draft) /* then drafts give those colours */
+            extra += rt_draft_bytes(o, nc);
+    } else if (RT_HAS_DRAFT && o->draft) {
+        extra += rt_draft_bytes(o, n);
+    }
+    return rt_pixel_bytes(o, n) + extra;
+}
+
+size_t rt_buffer_bytes(const rt_options *o)
+{
+    return rt_window_bytes(o, o->width);
 }
 
 /* Grid side n for spp = n * n, or 0 if spp is not a supported square. */
@@ -91,6 +102,14 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
                          int y1, uint8_t *row_buf, rt_row_fn fn, void *ctx,
                          rt_stats *stats)
 {
+    return rt_render_window(s, o, 0, y0, o ? (int)o->width : 1, y1, row_buf,
+                            fn, ctx, stats);
+}
+
+rt_status rt_render_window(const rt_scene *s, const rt_options *o, int x0,
+                           int y0, int x1, int y1, uint8_t *row_buf,
+                           rt_row_fn fn, void *ctx, rt_stats *stats)
+{
     /* The scene's ranges and indices first: rt_scene_features reads
      * through them. */
     if (!s || !o || !scene_in_range(s))
@@ -103,8 +122,9 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
         o->width > RT_MAX_WIDTH || o->height < 1 ||
         o->height > RT_MAX_HEIGHT || o->depth > RT_MAX_DEPTH ||
         o->format > RT_RGB565_BE || y0 < 0 || y1 > (int)o->height ||
-        y0 > y1)
+        y0 > y1 || x0 < 0 || x1 > (int)o->width || x0 >= x1)
         return RT_ERR_ARG;
+    const unsigned c0 = (unsigned)x0, c1 = (unsigned)x1;
 
     rt_tracer tr;
     rt_tracer_init(&tr, s, o);
@@ -113,12 +133,14 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
     rt_cam_frame cf;
     rt_cam_setup(&cf, s, o->width, o->height, n);
     if (RT_HAS_SUPERSAMPLING && o->adaptive && n > 1)
-        return rt_aa_adaptive(&tr, &wk, &cf, o, y0, y1, row_buf, fn, ctx);
+        return rt_aa_adaptive(&tr, &wk, &cf, o, c0, y0, c1, y1, row_buf, fn,
+                              ctx);
     if (RT_HAS_DRAFT && o->draft)
-        return rt_draft_render(&tr, &wk, &cf, o, y0, y1, row_buf, fn, ctx);
+        return rt_draft_render(&tr, &wk, &cf, o, c0, y0, c1, y1, row_buf, fn,
+                               ctx);
     for (int y = y0; y < y1; y++) {
-        rt_aa_row(&tr, &wk, &cf, o, (unsigned)y, row_buf);
-        if (fn(ctx, y, row_buf, rt_row_bytes(o)) != 0)
+        rt_aa_row(&tr, &wk, &cf, o, (unsigned)y, c0, c1, row_buf);
+        if (fn(ctx, y, row_buf, rt_pixel_bytes(o, c1 - c0)) != 0)
             return RT_ERR_ABORTED;
     }
     return RT_OK;

@@ -6,9 +6,10 @@
  *
  * Output: semihosting (out_semihost.c) for the image and the figures, as on
  * every board, and each row on the panel: port_display_row() maps it to
- * grey levels with rt_grey4() (core/frame/rt_grey.c, the mapping the host's
- * tools/grey4.c uses too) and sends it as it comes, two pixels a byte;
- * there is no frame buffer, only one panel row of 64 bytes on the stack.
+ * grey levels with the library's panel converter (core/frame/rt_panel.h,
+ * RT_PANEL_GREY4 with the ordered dither, as the host's tools/grey4.c) and
+ * sends it as it comes, two pixels a byte; there is no frame buffer, only
+ * one panel row of 64 bytes on the stack.
  * When the run is done the firmware says so and keeps the picture up:
  * tools/qemu_screen.py then takes the monitor's screendump and quits QEMU.
  *
@@ -28,7 +29,7 @@
 #include "port.h"
 #include "mpu_guard.h"
 #include "oled_ssd0323.h"
-#include "rt_grey.h"
+#include "rt_panel.h"
 
 #define REG(addr) (*(volatile uint32_t *)(addr))
 
@@ -125,18 +126,15 @@ void port_display_row(int y, const uint8_t *rgb, unsigned width)
     unsigned w = width < OLED_WIDTH ? width : OLED_WIDTH;
     unsigned nbytes = (w + 1) / 2;
     uint8_t line[OLED_WIDTH / 2];
+    rt_panel panel; /* the ordered dither keeps nothing between rows */
 
     if (y == 0)
         oled_window(0, nbytes - 1, 0, OLED_HEIGHT - 1);
-    if (y < 0 || (unsigned)y >= OLED_HEIGHT)
+    if (y < 0 || (unsigned)y >= OLED_HEIGHT ||
+        rt_panel_init(&panel, RT_PANEL_GREY4, RT_PANEL_ORDERED, 0, w, line,
+                      0) != RT_OK)
         return;
-    for (unsigned x = 0; x < w; x += 2) {
-        unsigned left = rt_grey4(rgb + 3 * x, x, (unsigned)y);
-        unsigned right = x + 1 < w ? rt_grey4(rgb + 3 * x + 3, x + 1,
-                                              (unsigned)y) : 0;
-        line[x / 2] = (uint8_t)(left << 4 | right);
-    }
-    oled_data(line, nbytes);
+    oled_data(line, (unsigned)rt_panel_row(&panel, (unsigned)y, rgb));
 }
 
 void port_display_done(void)

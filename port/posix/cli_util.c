@@ -67,7 +67,9 @@ int cli_check_output(const char *out, const char *scene)
     if (image_kind_of(out) == IMAGE_UNKNOWN)
         return cli_error("cannot write '%s': the output name must end in "
                          ".ppm or .png (or .raw, .bin or .h for the rows "
-                         "as they are; or be - for PPM on stdout)", out);
+                         "as they are, .pbm or .pgm with --format mono, "
+                         "mono-page or grey4; or be - for PPM on stdout)",
+                         out);
     if (stat(out, &a) == 0 && stat(scene, &b) == 0 && a.st_dev == b.st_dev &&
         a.st_ino == b.st_ino)
         return cli_error("the output '%s' is the scene file itself; name "

@@ -174,7 +174,8 @@ typedef struct {
 static int check_diff_name(const compare_args *a)
 {
     struct stat d, in;
-    if (strcmp(a->diff, "-") == 0 || image_kind_of(a->diff) == IMAGE_UNKNOWN) {
+    if (strcmp(a->diff, "-") == 0 || image_kind_of(a->diff) == IMAGE_UNKNOWN ||
+        image_kind_of(a->diff) == IMAGE_PANEL_PNM) {
         fprintf(stderr, "fixtrace compare: cannot write the diff image "
                 "'%s': its name must end in .ppm or .png\n", a->diff);
         return 2;

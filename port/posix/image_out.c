@@ -9,11 +9,14 @@
 
 #include "image_out.h"
 #include "png.h"
+#include "rt_panel.h"
 #include "rt_render.h"
 
 struct image_out {
     int w, h, format, to_stdout;
     image_kind kind;
+    int panel, panel_dither; /* rt_panel_format + 1 (0: none), its dither */
+    int panel_x0, panel_y0;  /* the frame pixel at the image's top left */
     size_t bpp;     /* bytes a pixel in rgb: 3, or the row format's */
     uint8_t *rgb;   /* w * h * bpp: RGB888, or the rows as given */
     char *target;   /* final name */
@@ -39,6 +42,8 @@ image_kind image_kind_of(const char *path)
         return IMAGE_RAW;
     if (ends_with_ci(path, ".h"))
         return IMAGE_C_ARRAY;
+    if (ends_with_ci(path, ".pbm") || ends_with_ci(path, ".pgm"))
+        return IMAGE_PANEL_PNM;
     return IMAGE_UNKNOWN;
 }
 
@@ -167,8 +172,73 @@ static int write_c_array(image_out *o, FILE *f)
     return fputs("};\n", f) < 0 ? -1 : 0;
 }
 
+int image_out_panel(image_out *o, int format, int dither, int x0, int y0)
+{
+    if (o->format != RT_RGB888 || format < 0 || format >= RT_PANEL_FORMATS ||
+        dither < 0 || dither >= RT_PANEL_DITHERS ||
+        (!o->to_stdout &&
+         (o->kind == IMAGE_PNG || o->kind == IMAGE_C_ARRAY)))
+        return -1;
+    o->panel = format + 1;
+    o->panel_dither = dither;
+    o->panel_x0 = x0;
+    o->panel_y0 = y0;
+    return 0;
+}
+
+/* The panel's bytes (.raw, .bin) or its picture (PBM, PGM): each row
+ * through rt_panel, in order, with O(width) buffers. */
+static int write_panel(image_out *o, FILE *f)
+{
+    const int raw = !o->to_stdout && o->kind == IMAGE_RAW;
+    const int grey = o->panel - 1 == RT_PANEL_GREY4;
+    /* A picture of a mono panel is the same pixels in plain rows. */
+    const int fmt = raw || grey ? o->panel - 1 : RT_PANEL_MONO;
+    const unsigned w = (unsigned)o->w;
+    rt_panel p;
+    uint8_t *out = malloc(rt_panel_out_bytes((unsigned)fmt, w));
+    int16_t *err = malloc((rt_panel_err_count((unsigned)o->panel_dither, w) +
+                           1) * sizeof *err);
+    uint8_t *line = malloc(w);
+    int rc = -1;
+    if (!out || !err || !line ||
+        rt_panel_init(&p, (unsigned)fmt, (unsigned)o->panel_dither,
+                      (unsigned)o->panel_x0, w, out, err) != RT_OK)
+        goto done;
+    if (!raw && fprintf(f, grey ? "P5\n%d %d\n15\n" : "P4\n%d %d\n", o->w,
+                        o->h) < 0)
+        goto done;
+    for (int y = 0; y < o->h; y++) {
+        size_t n = rt_panel_row(&p, (unsigned)(y + o->panel_y0),
+                                o->rgb + (size_t)y * (size_t)o->w * 3);
+        const uint8_t *src = out;
+        if (!raw && grey) { /* PGM: a byte a level */
+            for (unsigned x = 0; x < w; x++)
+                line[x] = x % 2 ? out[x / 2] & 15u : out[x / 2] >> 4;
+            src = line;
+            n = w;
+        } else if (!raw) { /* PBM: 1 is black, the pad bits 0 */
+            const unsigned pad = w % 8 ? 0xFF00u >> (w % 8) : 0xFFu;
+            for (size_t i = 0; i < n; i++)
+                line[i] = (uint8_t)(~out[i] & (i + 1 < n ? 0xFFu : pad));
+            src = line;
+        }
+        if (fwrite(src, 1, n, f) != n)
+            goto done;
+    }
+    size_t n = rt_panel_flush(&p);
+    rc = fwrite(out, 1, n, f) == n ? 0 : -1;
+done:
+    free(out);
+    free(err);
+    free(line);
+    return rc;
+}
+
 static int write_image(image_out *o, FILE *f)
 {
+    if (o->panel)
+        return write_panel(o, f);
     if (!o->to_stdout && o->kind == IMAGE_PNG)
         return png_write(f, o->rgb, o->w, o->h);
     if (!o->to_stdout && o->kind == IMAGE_C_ARRAY)

@@ -23,7 +23,8 @@ typedef enum {
     IMAGE_PPM,
     IMAGE_PNG,
     IMAGE_RAW,
-    IMAGE_C_ARRAY
+    IMAGE_C_ARRAY,
+    IMAGE_PANEL_PNM /* .pbm, .pgm: a mono or grey panel's picture */
 } image_kind;
 
 /* The kind of image a file name asks for; IMAGE_UNKNOWN for any other
@@ -36,6 +37,17 @@ image_kind image_kind_of(const char *path);
  * the name first. NULL with a message in err. */
 image_out *image_out_open(const char *path, int w, int h, int format,
                           int any_order, char *err, size_t errlen);
+
+/* Makes o a panel image: its RGB888 rows are converted at commit by
+ * rt_panel (format and dither: rt_panel_format, rt_panel_dither). PPM,
+ * PBM, PGM and stdout names then get the panel's picture, PBM (P4, 1 =
+ * black) for the mono formats or PGM (P5, levels 0..15) for grey4; .raw
+ * and .bin the panel's bytes exactly (mono rows, SSD1306 pages, packed
+ * grey nibbles). Returns 0, or -1 for PNG and .h names, which do not
+ * hold them. The image's top-left pixel is frame pixel (x0, y0): the
+ * ordered dither and the pages follow the frame, so a window's picture is
+ * that part of the frame's. */
+int image_out_panel(image_out *o, int format, int dither, int x0, int y0);
 
 /* Stores row y (rows may come in any order). Returns 0, or -1 on a bad
  * row. */

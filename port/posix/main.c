@@ -25,6 +25,7 @@
 #include "progress.h"
 #include "receive.h"
 #include "ref_render.h"
+#include "rt_panel.h"
 #include "rt_parse.h"
 #include "rt_render.h"
 
@@ -46,10 +47,22 @@ typedef struct {
     const char *out_path;
     long width, height, spp, depth, jobs, adaptive, draft;
     int stats, quiet, reference, build_flags, emit_c;
-    const char *format; /* rgb888 (default), rgb565le, rgb565be */
-    int dither;
+    const char *format; /* rgb888 (default), rgb565le, rgb565be, or a
+                           panel's: mono, mono-page, grey4 */
+    int dither;         /* 0, 1 ordered, 2 diffusion (panels only) */
     int trace_all;
+    int window;         /* 1: only win[] = x0, y0, x1, y1 is rendered */
+    long win[4];
 } cli;
+
+/* The panel format a --format name asks for, or -1 for an RGB one. */
+static int panel_format(const char *f)
+{
+    return strcmp(f, "mono") == 0        ? RT_PANEL_MONO
+           : strcmp(f, "mono-page") == 0 ? RT_PANEL_MONO_PAGE
+           : strcmp(f, "grey4") == 0     ? RT_PANEL_GREY4
+                                         : -1;
+}
 
 static void usage(FILE *f)
 {
@@ -115,7 +128,23 @@ static void usage(FILE *f)
 "                        r5 -> r5 << 3 | r5 >> 2), so both byte orders\n"
 "                        give the same file; .raw, .bin and .h keep the\n"
 "                        565 bytes in the order chosen\n"
-"        --dither        ordered dithering for the 565 formats\n"
+"        --dither [ordered|diffusion]\n"
+"                        dithering: ordered (4x4 Bayer, the default) for\n"
+"                        the 565 and panel formats; diffusion\n"
+"                        (Floyd-Steinberg) for the panel formats only.\n"
+"                        Without it panels take the nearest value\n"
+"        --format mono|mono-page|grey4\n"
+"                        a mono or 16-grey panel (docs/embedding.md):\n"
+"                        .pbm/.pnm/.pgm or - write its picture (PBM for\n"
+"                        mono, PGM with levels 0..15 for grey4); .raw and\n"
+"                        .bin its bytes: mono rows MSB-first (1 = lit),\n"
+"                        mono-page SSD1306 pages (8 rows a page, a byte a\n"
+"                        column, bit 0 on top), grey4 two pixels a byte\n"
+"                        (the first in the high nibble)\n"
+"        --window X0,Y0,X1,Y1\n"
+"                        render only columns X0..X1-1 of rows Y0..Y1-1 of\n"
+"                        the frame, the same bytes as those pixels of the\n"
+"                        whole render; the image is (X1-X0)x(Y1-Y0)\n"
 "    -q, --quiet         no progress bar, no messages on success\n"
 "    -h, --help          this text\n"
 "        --version       print the version\n"
@@ -134,9 +163,9 @@ static void usage(FILE *f)
         f);
 }
 
-/* Default output: the scene's base name with .ppm, in the current
+/* Default output: the scene's base name with ext (".ppm"), in the current
  * directory. */
-static char *default_output(const char *scene)
+static char *default_output(const char *scene, const char *ext)
 {
     const char *base = strrchr(scene, '/');
     base = base ? base + 1 : scene;
@@ -148,7 +177,7 @@ static char *default_output(const char *scene)
     if (!out)
         return NULL;
     memcpy(out, base, n);
-    memcpy(out + n, ".ppm", 5);
+    memcpy(out + n, ext, 5); /* a dot and three letters */
     return out;
 }
 
@@ -205,12 +234,34 @@ static int parse_args(int argc, char **argv, cli *c)
         } else if (strcmp(a, "--format") == 0 &&
                    (val = cli_value(argc, argv, &i, a)) != NULL) {
             if (strcmp(val, "rgb888") && strcmp(val, "rgb565le") &&
-                strcmp(val, "rgb565be"))
-                return cli_error("--format must be rgb888, rgb565le or "
-                                 "rgb565be (got '%s')", val);
+                strcmp(val, "rgb565be") && panel_format(val) < 0)
+                return cli_error("--format must be rgb888, rgb565le, "
+                                 "rgb565be, mono, mono-page or grey4 (got "
+                                 "'%s')", val);
             c->format = val;
         } else if (strcmp(a, "--dither") == 0) {
-            c->dither = 1;
+            c->dither = 1; /* the value is optional: only these words */
+            if (i + 1 < argc && strcmp(argv[i + 1], "ordered") == 0)
+                i++;
+            else if (i + 1 < argc && strcmp(argv[i + 1], "diffusion") == 0)
+                c->dither = 2, i++;
+        } else if (strcmp(a, "--window") == 0 &&
+                   (val = cli_value(argc, argv, &i, a)) != NULL) {
+            char *end;
+            const char *p = val;
+            for (int k = 0; k < 4; k++) {
+                errno = 0;
+                c->win[k] = strtol(p, &end, 10);
+                if (end == p || errno || c->win[k] < 0 ||
+                    c->win[k] > RT_MAX_WIDTH || *end != (k < 3 ? ',' : '\0'))
+                    return cli_error("--window needs X0,Y0,X1,Y1, four whole "
+                                     "numbers from 0 (got '%s')", val);
+                p = end + 1;
+            }
+            if (c->win[0] >= c->win[2] || c->win[1] >= c->win[3])
+                return cli_error("--window %s is empty: X0 < X1 and Y0 < Y1 "
+                                 "are needed", val);
+            c->window = 1;
         } else if (strcmp(a, "--trace-all") == 0) {
             c->trace_all = 1;
         } else if (strcmp(a, "--stats") == 0) {
@@ -241,7 +292,14 @@ static int parse_args(int argc, char **argv, cli *c)
     if (c->adaptive && c->spp == 1)
         return cli_error("--adaptive needs -s 4, 9 or 16");
     if (c->dither && strcmp(c->format, "rgb888") == 0)
-        return cli_error("--dither needs --format rgb565le or rgb565be");
+        return cli_error("--dither needs --format rgb565le, rgb565be, mono, "
+                         "mono-page or grey4");
+    if (c->dither == 2 && panel_format(c->format) < 0)
+        return cli_error("--dither diffusion needs --format mono, mono-page "
+                         "or grey4 (565 rows take ordered dithering)");
+    if (c->window && c->reference)
+        return cli_error("--window is a fixed-point core mode; the "
+                         "reference renders whole rows");
     return 0;
 }
 
@@ -260,6 +318,7 @@ typedef struct {
     int next_row;
     rt_status status;
     rt_stats stats;
+    int x0, y0, x1, y1; /* the window rendered: the frame, or --window */
 } job;
 
 static double seconds_since(const struct timespec *t0)
@@ -294,7 +353,7 @@ static int on_row(void *ctx, int y, const uint8_t *row, size_t n)
     job *j = ctx;
     int rc;
     pthread_mutex_lock(&j->lock);
-    rc = image_out_row(j->out, y, row, n);
+    rc = image_out_row(j->out, y - j->y0, row, n);
     j->rows_done++;
     progress_eta_row(&j->eta, y);
     if (j->progress)
@@ -325,7 +384,7 @@ static void add_stats(rt_stats *a, const rt_stats *b)
 static void *worker(void *arg)
 {
     job *j = arg;
-    size_t nbytes = rt_buffer_bytes(&j->opt);
+    size_t nbytes = rt_window_bytes(&j->opt, (unsigned)(j->x1 - j->x0));
     uint8_t *row = malloc(nbytes);
     rt_stats st;
     memset(&st, 0, sizeof st);
@@ -338,18 +397,22 @@ static void *worker(void *arg)
     const int band = j->opt.draft ? DRAFT_BAND_ROWS : BAND_ROWS;
     for (;;) {
         pthread_mutex_lock(&j->lock);
-        int y = j->status == RT_OK ? j->next_row : j->opt.height;
+        int y = j->status == RT_OK ? j->next_row : j->y1;
         j->next_row += band;
         j->rays_so_far = j->stats.primary + j->stats.shadow +
                          j->stats.reflection + j->stats.refraction;
         pthread_mutex_unlock(&j->lock);
-        if (y >= j->opt.height)
+        if (y >= j->y1)
             break;
         rt_stats row_st;
         memset(&row_st, 0, sizeof row_st);
-        int y1 = y + band > j->opt.height ? j->opt.height : y + band;
-        rt_status rc = j->render(j->scene, &j->opt, y, y1, row, on_row, j,
-                                 &row_st);
+        int y1 = y + band > j->y1 ? j->y1 : y + band;
+        rt_status rc =
+            j->x1 - j->x0 < j->opt.width
+                ? rt_render_window(j->scene, &j->opt, j->x0, y, j->x1, y1,
+                                   row, on_row, j, &row_st)
+                : j->render(j->scene, &j->opt, y, y1, row, on_row, j,
+                            &row_st);
         pthread_mutex_lock(&j->lock);
         add_stats(&j->stats, &row_st);
         if (rc != RT_OK && j->status == RT_OK)
@@ -391,7 +454,24 @@ static int render_scene(const cli *c, const rt_scene *scene)
     j.opt.format = strcmp(c->format, "rgb565le") == 0   ? RT_RGB565_LE
                    : strcmp(c->format, "rgb565be") == 0 ? RT_RGB565_BE
                                                         : RT_RGB888;
-    j.opt.dither = (uint8_t)c->dither;
+    /* Panels take RGB888 rows, which rt_panel converts and dithers. */
+    const int panel = panel_format(c->format);
+    j.opt.dither = (uint8_t)(panel < 0 ? c->dither : 0);
+    j.x0 = 0;
+    j.y0 = 0;
+    j.x1 = j.opt.width;
+    j.y1 = j.opt.height;
+    if (c->window) {
+        if (c->win[2] > j.opt.width || c->win[3] > j.opt.height)
+            return cli_error("--window %ld,%ld,%ld,%ld reaches past the "
+                             "%dx%d frame", c->win[0], c->win[1], c->win[2],
+                             c->win[3], j.opt.width, j.opt.height);
+        j.x0 = (int)c->win[0];
+        j.y0 = (int)c->win[1];
+        j.x1 = (int)c->win[2];
+        j.y1 = (int)c->win[3];
+    }
+    j.next_row = j.y0;
     j.opt.adaptive = (uint8_t)c->adaptive;
     j.opt.trace_all = (uint8_t)c->trace_all;
     j.opt.draft = (uint8_t)c->draft;
@@ -406,7 +486,8 @@ static int render_scene(const cli *c, const rt_scene *scene)
     if (c->reference && c->draft)
         return cli_error("--draft is a fixed-point core mode; the "
                          "reference always traces every pixel");
-    j.progress = !c->quiet && isatty(STDERR_FILENO);
+    /* The progress estimate is of whole frames. */
+    j.progress = !c->quiet && isatty(STDERR_FILENO) && !c->window;
     pthread_mutex_init(&j.lock, NULL);
 
     uint32_t missing = rt_scene_features(scene, j.opt.spp) &
@@ -419,7 +500,12 @@ static int render_scene(const cli *c, const rt_scene *scene)
     }
 
     char err[256];
-    char *out_path = c->out_path ? NULL : default_output(c->scene_path);
+    char *out_path =
+        c->out_path ? NULL
+                    : default_output(c->scene_path,
+                                     panel < 0 ? ".ppm"
+                                     : panel == RT_PANEL_GREY4 ? ".pgm"
+                                                               : ".pbm");
     const char *path = c->out_path ? c->out_path : out_path;
     if (!path) {
         fprintf(stderr, "fixtrace: out of memory\n");
@@ -429,12 +515,26 @@ static int render_scene(const cli *c, const rt_scene *scene)
         free(out_path);
         return 2;
     }
-    j.out = image_out_open(path, j.opt.width, j.opt.height, j.opt.format,
+    if (panel < 0 && image_kind_of(path) == IMAGE_PANEL_PNM) {
+        cli_error("%s: a .pbm or .pgm output needs --format mono, "
+                  "mono-page or grey4", path);
+        free(out_path);
+        return 2;
+    }
+    j.out = image_out_open(path, j.x1 - j.x0, j.y1 - j.y0, j.opt.format,
                            c->jobs > 1, err, sizeof err);
     if (!j.out) {
         fprintf(stderr, "fixtrace: %s\n", err);
         free(out_path);
         return 1;
+    }
+    if (panel >= 0 &&
+        image_out_panel(j.out, panel, c->dither, j.x0, j.y0) != 0) {
+        image_out_abort(j.out);
+        cli_error("%s: --format %s writes .pbm, .pgm, .pnm, .ppm, .raw, "
+                  ".bin or - (not PNG or .h)", path, c->format);
+        free(out_path);
+        return 2;
     }
     if (j.progress &&
         progress_eta_init(&j.eta, scene, &j.opt, j.render) != 0)
@@ -479,12 +579,13 @@ static int render_scene(const cli *c, const rt_scene *scene)
         rc = 1;
     } else if (!c->quiet && strcmp(path, "-") != 0) {
         fprintf(stderr, "fixtrace: wrote %s (%dx%d, %d spp%s)\n", path,
-                j.opt.width, j.opt.height, j.opt.spp,
+                j.x1 - j.x0, j.y1 - j.y0, j.opt.spp,
                 c->reference ? ", reference" : "");
     }
     if (c->stats) {
-        fprintf(stderr, "pixels %lu\n",
-                (unsigned long)j.opt.width * j.opt.height);
+        const uint64_t pixels =
+            (uint64_t)(j.x1 - j.x0) * (uint64_t)(j.y1 - j.y0);
+        fprintf(stderr, "pixels %llu\n", (unsigned long long)pixels);
         fprintf(stderr, "primary_rays %llu\n",
                 (unsigned long long)j.stats.primary);
         fprintf(stderr, "shadow_rays %llu\n",
@@ -497,8 +598,7 @@ static int render_scene(const cli *c, const rt_scene *scene)
                 (unsigned long long)j.stats.tests);
         fprintf(stderr, "rays_cut %llu\n", (unsigned long long)j.stats.cut);
         fprintf(stderr, "traced_pixels %llu\n",
-                (unsigned long long)((uint64_t)j.opt.width * j.opt.height -
-                                     j.stats.interpolated));
+                (unsigned long long)(pixels - j.stats.interpolated));
         fprintf(stderr, "interpolated_pixels %llu\n",
                 (unsigned long long)j.stats.interpolated);
         fprintf(stderr, "render_seconds %.6f\n", secs);

@@ -6,7 +6,8 @@
  * are checked on the way: the error position lies inside the input and the
  * message is terminated; a scene it accepts stays inside its capacities and
  * only names materials it has. Each accepted scene is then rendered at a
- * tiny size by the core (rt_render_rows) and by the double reference
+ * tiny size by the core (rt_render_rows; a row alone and a window of it,
+ * rt_render_window, must give the same bytes) and by the double reference
  * (ref_render_rows), so both are fuzzed on whatever the parser lets
  * through. The render size, samples and depth are cut down until one input
  * costs a bounded number of ray-object tests, so a run stays fast under
@@ -103,6 +104,7 @@ typedef struct {
     size_t nbytes;
     int rows;
     uint8_t last[FUZZ_W * 3]; /* the bottom row, as first rendered */
+    size_t win_off, win_bytes; /* a window's part of it */
 } row_sink;
 
 static int take_row(void *ctx, int y, const uint8_t *row, size_t nbytes)
@@ -113,6 +115,18 @@ static int take_row(void *ctx, int y, const uint8_t *row, size_t nbytes)
     if (y == k->height - 1)
         memcpy(k->last, row, nbytes);
     k->rows++;
+    return 0;
+}
+
+/* A window of the bottom row: the same bytes as that part of it. */
+static int compare_window(void *ctx, int y, const uint8_t *row,
+                          size_t nbytes)
+{
+    const row_sink *k = ctx;
+    require(y == k->height - 1 && nbytes == k->win_bytes,
+            "a window's row is its width");
+    require(memcmp(k->last + k->win_off, row, nbytes) == 0,
+            "a window equals the same pixels of the full frame");
     return 0;
 }
 
@@ -192,6 +206,20 @@ static void render(const rt_scene *s, size_t size)
     rs = rt_render_rows(s, &o, o.height - 1, o.height, row, compare_row, &k,
                         NULL);
     require(rs == RT_OK, "rt_render_rows renders one band");
+
+    /* So do the same pixels of a window, in a buffer of exactly
+     * rt_window_bytes(). */
+    const int x0 = (int)(size % o.width);
+    const int x1 = x0 + 1 + (int)((size / 7u) % (o.width - (unsigned)x0));
+    const size_t bpp = k.nbytes / o.width;
+    uint8_t *win = malloc(rt_window_bytes(&o, (unsigned)(x1 - x0)));
+    require(win != NULL, "malloc");
+    k.win_off = (size_t)x0 * bpp;
+    k.win_bytes = (size_t)(x1 - x0) * bpp;
+    rs = rt_render_window(s, &o, x0, o.height - 1, x1, o.height, win,
+                          compare_window, &k, NULL);
+    require(rs == RT_OK, "rt_render_window renders a window");
+    free(win);
 
     k.rows = 0;
     rs = ref_render_rows(s, &o, 0, o.height, row, take_row, &k, NULL);
