@@ -24,11 +24,10 @@
 #include "image_out.h"
 #include "progress.h"
 #include "receive.h"
+#include "fixtrace_version.h"
 #include "ref_render.h"
 #include "rt_parse.h"
 #include "rt_render.h"
-
-#define FIXTRACE_VERSION "0.1.0"
 
 static volatile sig_atomic_t interrupted;
 
@@ -168,7 +167,7 @@ static int parse_args(int argc, char **argv, cli *c)
             exit(0);
         } else if (strcmp(a, "--version") == 0) {
             printf("fixtrace %s (Q16.16, RT_MAX_DEPTH %d, RT_MAX_OBJECTS %d)\n",
-                   FIXTRACE_VERSION, RT_MAX_DEPTH, RT_MAX_OBJECTS);
+                   FIXTRACE_VERSION_STRING, RT_MAX_DEPTH, RT_MAX_OBJECTS);
             exit(0);
         } else if (TAKE("-o", "--output")) {
             if (c->out_path)
