@@ -504,6 +504,24 @@ static void test_defaults_and_layout(void)
     CHECK_EQ(S.background.r, 0);
     CHECK_EQ(S.n_objects, 0);
     CHECK_EQ(S.n_lights, 0);
+    /* A material built in C from rt_material_defaults() equals the parsed
+     * one, and the defaults are the documented decimals. */
+    CHECK(GOOD("material m color 0.5 0.25 1\n" CAM));
+    {
+        rt_material m;
+        rt_material_defaults(&m);
+        m.color.r = FX_CONST(0.5);
+        m.color.g = FX_CONST(0.25);
+        m.color.b = FX_CONST(1.0);
+        CHECK_EQ(rt_material_prepare(&m), RT_OK);
+        CHECK(memcmp(&m, &S.mat[0], sizeof m) == 0);
+        CHECK_EQ(m.ambient, FX_CONST(0.1));
+        CHECK_EQ(m.diffuse, FX_CONST(0.9));
+        CHECK_EQ(m.specular, FX_CONST(0.5));
+        CHECK_EQ(m.shininess, 10);
+        CHECK_EQ(m.ior, FX_CONST(1.0));
+        CHECK_EQ(m.reflect + m.transparency + m.bump + m.texture, 0);
+    }
     /* Statements in any order, fields in any order, blank lines, tabs,
      * comments glued to tokens, CRLF, a byte order mark. */
     CHECK(GOOD("\xEF\xBB\xBF# bom\r\n\r\n" CAM));
