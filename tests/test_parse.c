@@ -860,6 +860,14 @@ static void test_object_errors(void)
 
 static void test_lexical_errors(void)
 {
+    /* A quote that does not close on its line is reported at the quote;
+     * a closed one may hold spaces and '#', and stays one token. */
+    BAD(CAM "material m color 1 1 1\nmesh file \"a b.obj material m", PE, 3,
+        11, "unclosed quote");
+    BAD(CAM "material m color 1 1 1\nmesh file \"a b.obj\" material m",
+        RT_ERR_UNSUPPORTED, 3, 1, "'mesh' reads a file");
+    BAD(CAM "material m color 1 1 1\nsphere \"x # y\" 1", PE, 3, 8,
+        "'\"x # y\"'");
     BAD("camera eye 1e5 0 0 look 0 0 0", PE, 1, 12,
         "exponents are not supported (write the number out): '1e5'");
     BAD("camera eye 2.5E-3 0 0 look 0 0 0", PE, 1, 12, "exponents");
