@@ -8,8 +8,9 @@
 # (CI=true) a skip is a failure, because CI installs every tool.
 #
 # TEST_JOBS parts (default: the machine's processors) run at once, each
-# with its own log; the parts that took longest last time start first, and
-# the report lists every part in its fixed order once all have ended. Parts
+# with its own log; the parts that took longest last time start first. It
+# says at the start how many parts run, and prints each part's line (its
+# counts and seconds) as soon as it ends. Parts
 # that build share nothing but the host build, which test-build has made
 # already; the firmware suites lock each board's build directory.
 set -u
@@ -28,7 +29,9 @@ run_part() {
     local name=$1; shift
     local start=$SECONDS
     "$@" >"$log_dir/$name.log" 2>&1
-    echo "$? $((SECONDS - start))" >"$log_dir/$name.rc"
+    # Renamed into place, so the report never reads half a line.
+    echo "$? $((SECONDS - start))" >"$log_dir/$name.rc.tmp"
+    mv -f "$log_dir/$name.rc.tmp" "$log_dir/$name.rc"
 }
 
 # Adds up one part that has ended, and prints its line.
@@ -57,8 +60,10 @@ report_part() {
         fi
     fi
     pass=$((pass + p)); fail=$((fail + f)); skip=$((skip + s))
-    printf '%-28s %6d passed %4d failed %3d skipped  (%ds)\n' \
-        "$name" "$p" "$f" "$s" "$secs"
+    reported=$((reported + 1))
+    local total=${#parts[@]}
+    printf '[%*d/%d] %-28s %6d passed %4d failed %3d skipped  (%ds)\n' \
+        "${#total}" "$reported" "$total" "$name" "$p" "$f" "$s" "$secs"
     if [ "$f" -gt 0 ]; then
         grep -E 'FAILED|error|Error' "$log" | head -n 20 | sed 's/^/    /'
         echo "    (full log: $log)"
@@ -93,21 +98,40 @@ done | sort -k1,1nr -k2,2n | cut -d' ' -f2)
 for i in "${!parts[@]}"; do
     rm -f "$log_dir/${parts[$i]%% *}.rc"
 done
+
+# Reports every part that has ended since the last call, in the order they
+# ended (as far as one wait can tell).
+declare -A done_parts=()
+reported=0
+report_ended() {
+    local part name
+    for part in "${parts[@]}"; do
+        name=${part%% *}
+        [ -z "${done_parts[$name]:-}" ] && [ -f "$log_dir/$name.rc" ] || continue
+        done_parts[$name]=1
+        report_part "$name"
+    done
+}
+
+echo "Running ${#parts[@]} test parts, $JOBS at a time (logs in $log_dir/)"
 running=0
 for i in $order; do
     if [ "$running" -ge "$JOBS" ]; then
         wait -n
         running=$((running - 1))
+        report_ended
     fi
     # shellcheck disable=SC2086
     run_part ${parts[$i]} &
     running=$((running + 1))
 done
-wait
-
-for part in "${parts[@]}"; do
-    report_part "${part%% *}"
+while [ "$running" -gt 0 ]; do
+    wait -n
+    running=$((running - 1))
+    report_ended
 done
+wait
+report_ended
 if [ -n "$skipped_parts" ]; then
     echo "Skipped parts (install the tool to run them):$skipped_parts"
 fi

@@ -33,6 +33,52 @@ expect() {
 expect 0 'SYNOPSIS' -- "$FT" --help
 expect 0 'EXAMPLES' -- "$FT" -h
 expect 0 '^fixtrace [0-9]' -- "$FT" --version
+# The version is fixtrace_version.h's, and --help names every subcommand.
+want=$(sed -nE 's/^#define FIXTRACE_VERSION_(MAJOR|MINOR|PATCH) +([0-9]+).*/\2/p' \
+    core/fx/fixtrace_version.h | paste -sd. -)
+expect 0 "^fixtrace ${want//./\\.} " -- "$FT" --version
+expect 0 'fixtrace receive -o' -- "$FT" --help
+expect 0 'fixtrace compare A' -- "$FT" --help
+
+# -W or -H alone keeps the scene's aspect (seed: 320x240).
+size_of() { sed -n 2p "$1"; }
+"$FT" -q -W 64 -o "$tmp/w.ppm" "$SEED" && [ "$(size_of "$tmp/w.ppm")" = "64 48" ] &&
+    ok || bad "-W 64 alone: $(size_of "$tmp/w.ppm"), want 64 48"
+"$FT" -q -H 30 -o "$tmp/h.ppm" "$SEED" && [ "$(size_of "$tmp/h.ppm")" = "40 30" ] &&
+    ok || bad "-H 30 alone: $(size_of "$tmp/h.ppm"), want 40 30"
+"$FT" -q -W 33 -H 7 -o "$tmp/wh.ppm" "$SEED" && [ "$(size_of "$tmp/wh.ppm")" = "33 7" ] &&
+    ok || bad "-W 33 -H 7: $(size_of "$tmp/wh.ppm"), want 33 7"
+"$FT" -q -W 1 -o "$tmp/w1.ppm" "$SEED" && [ "$(size_of "$tmp/w1.ppm")" = "1 1" ] &&
+    ok || bad "-W 1 alone: $(size_of "$tmp/w1.ppm"), want 1 1"
+
+# Quoted mesh paths: an unclosed quote is reported at the quote, and a
+# closed one may hold spaces and '#'.
+mkdir -p "$tmp/my models"
+cp scenes/models/torus.obj "$tmp/my models/ring #2.obj"
+printf '%s\n' 'camera eye 0 2 -6 look 0 0 0' 'light 5 5 -5' \
+    'material m color 1 1 1' 'mesh file "models/torus.obj material m' \
+    >"$tmp/unclosed.scene"
+expect 2 'unclosed.scene:4:11: error: unclosed quote' -- "$FT" -q -o "$tmp/u.ppm" "$tmp/unclosed.scene"
+printf '%s\n' 'camera eye 0 2 -6 look 0 0 0' 'light 5 5 -5' \
+    'material m color 1 1 1' 'mesh file "my models/ring #2.obj" material m # c' \
+    >"$tmp/spaced.scene"
+expect 0 '' -- "$FT" -q -W 16 -o "$tmp/spaced.ppm" "$tmp/spaced.scene"
+[ -s "$tmp/spaced.ppm" ] && ok || bad "a quoted path with spaces rendered nothing"
+
+# receive given no frame: a clear message, and no binary on the terminal.
+"$FT" -q -W 16 -o "$tmp/bin.ppm" "$SEED"
+"$FT" receive -o "$tmp/r.ppm" <"$tmp/bin.ppm" >"$tmp/out" 2>"$tmp/err"
+rc=$?
+if [ $rc -ne 1 ] || ! grep -q 'no image frame in stdin' "$tmp/err" ||
+    ! grep -q 'not text' "$tmp/err"; then
+    bad "receive of a PPM: status $rc, $(head -c 300 "$tmp/err")"
+elif LC_ALL=C grep -q '[^[:print:][:space:]]' "$tmp/err" ||
+    [ "$(grep -c . "$tmp/err")" -gt 4 ]; then
+    bad "receive echoes the binary input: $(LC_ALL=C tr -c '[:print:]\n' '?' <"$tmp/err" | head -c 200)"
+else
+    ok
+fi
+[ ! -e "$tmp/r.ppm" ] && ok || bad "receive wrote an image without a frame"
 expect 2 'no scene file given' -- "$FT"
 expect 2 'unknown option' -- "$FT" --bogus "$SEED"
 expect 2 'more than one scene' -- "$FT" "$SEED" "$SEED"

@@ -25,6 +25,11 @@ pass=0 fail=0
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
+# The example includes the package's names (<fixtrace/rt_parse.h>): every
+# core header under $tmp/inc/fixtrace/, as in tests/suite_docs.sh.
+mkdir -p "$tmp/inc/fixtrace"
+ln -s "$PWD"/core/*/*.h "$tmp/inc/fixtrace/"
+
 ok() { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAILED: $*"; }
 
@@ -78,7 +83,7 @@ app() {
     shift
     rm -f "$tmp/app"
     # shellcheck disable=SC2086
-    $CC $CFLAGS "$@" $CORE_INC -Idocs/examples "$tmp/app.c" \
+    $CC $CFLAGS "$@" $CORE_INC -I"$tmp/inc" -Idocs/examples "$tmp/app.c" \
         "$tmp/$name/libcore.a" -o "$tmp/app" >"$tmp/link.log" 2>&1
 }
 

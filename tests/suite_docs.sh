@@ -40,6 +40,13 @@ if [ ! -x "$FT" ]; then
     exit 1
 fi
 
+# The examples include the package's names (<fixtrace/rt_render.h>): here
+# every core header under $tmp/inc/fixtrace/ (tests/suite_cmake.sh builds
+# them against the installed package, which holds only the public ones).
+mkdir -p "$tmp/inc/fixtrace"
+ln -s "$PWD"/core/*/*.h "$tmp/inc/fixtrace/"
+PKG_INC="-I$tmp/inc"
+
 STRICT="-std=c99 -Wall -Wextra -Werror -Wshadow -Wundef -Wdouble-promotion
     -Wstrict-prototypes -Wmissing-prototypes -Wconversion -Wno-sign-conversion
     -fno-common"
@@ -47,7 +54,7 @@ STRICT="-std=c99 -Wall -Wextra -Werror -Wshadow -Wundef -Wdouble-promotion
 # --- docs/examples/*.c compile freestanding -------------------------------
 for src in docs/examples/*.c; do
     # shellcheck disable=SC2086
-    if $CC $STRICT -ffreestanding -nostdlib $CORE_INC -c "$src" \
+    if $CC $STRICT -ffreestanding -nostdlib $PKG_INC -c "$src" \
         -o "$tmp/ex.o" 2>"$tmp/err"; then
         ok
     else
@@ -56,7 +63,7 @@ for src in docs/examples/*.c; do
     if command -v arm-none-eabi-gcc >/dev/null 2>&1; then
         # shellcheck disable=SC2086
         if arm-none-eabi-gcc $STRICT -mcpu=cortex-m0 -mthumb -Os \
-            -ffreestanding -nostdlib $CORE_INC -c "$src" -o "$tmp/ex_m0.o" \
+            -ffreestanding -nostdlib $PKG_INC -c "$src" -o "$tmp/ex_m0.o" \
             2>"$tmp/err"; then
             ok
         else
@@ -177,7 +184,7 @@ int main(int argc, char **argv)
 }
 EOF
 # shellcheck disable=SC2046
-if $CC -std=c99 -O1 $CORE_INC -Idocs/examples "$tmp/fake_lcd.c" core/*/*.c \
+if $CC -std=c99 -O1 $CORE_INC $PKG_INC -Idocs/examples "$tmp/fake_lcd.c" core/*/*.c \
     -o "$tmp/fake_lcd" 2>"$tmp/err"; then
     ok
     if "$tmp/fake_lcd" "$tmp/embed.scene" "$tmp/lcd.ppm" 2>"$tmp/err"; then

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # The licence is in place: LICENSE holds the MIT licence, and every source
-# file git tracks (C, assembler, linker scripts, shell, Python, make and
-# CMake files) names it in an SPDX-License-Identifier line within its
+# file git tracks (C, C++, assembler, linker scripts, shell, Python, make,
+# CMake and Kconfig files, YAML manifests, Arduino sketches) names it in an SPDX-License-Identifier line within its
 # first five lines.
 set -u
 cd "$(dirname "$0")/.."
@@ -20,7 +20,7 @@ if ! command -v git >/dev/null 2>&1 || ! git rev-parse --git-dir >/dev/null 2>&1
 fi
 missing=$(git ls-files '*.c' '*.h' '*.S' '*.ld' '*.sh' '*.py' '*.mk' \
     '*.cmake' '*.cmake.in' '*.pc.in' 'Makefile' '*/CMakeLists.txt' \
-    'CMakeLists.txt' '.ci/run' | while read -r f; do
+    'CMakeLists.txt' '.ci/run' '*.cpp' '*.ino' '*.yml' '*Kconfig' | while read -r f; do
     [ -f "$f" ] || continue
     head -n 5 "$f" | grep -q 'SPDX-License-Identifier: MIT' || echo "$f"
 done)

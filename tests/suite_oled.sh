@@ -94,6 +94,14 @@ for scene in "$SEED" "$OTHER"; do
     else
         bad "$name: the run did not report its figures and display_done"
     fi
+    # It says where the screen went, and QEMU's idle notes stay out.
+    grep -q "^wrote $BUILD/screen.ppm" "$tmp/run.log" && ok ||
+        bad "$name: the run does not say it wrote $BUILD/screen.ppm"
+    if grep -qE 'Timer with period zero|icount sleep disabled' "$tmp/run.log"; then
+        bad "$name: the run prints QEMU's timer warnings"
+    else
+        ok
+    fi
     cmp -s "$BUILD/out.ppm" "$tmp/$name.ppm" && ok ||
         bad "$name: the image sent through semihosting differs from the" \
             "host's ($(cmp "$BUILD/out.ppm" "$tmp/$name.ppm" 2>&1 | head -n 1))"

@@ -233,8 +233,8 @@ static void test_sat_from_q32_misc(void)
     CHECK_EQ(fx_from_q32(0x8000), 1);   /* tie: toward +infinity */
     CHECK_EQ(fx_from_q32(-0x8000), 0);  /* tie: toward +infinity */
     CHECK_EQ(fx_from_q32(-0x8001), -1);
-    CHECK_EQ(fx_floor_int(FX(-0.5)), -1);
-    CHECK_EQ(fx_floor_int(FX(2.75)), 2);
+    CHECK_EQ(fx_floor_int(FX_CONST(-0.5)), -1);
+    CHECK_EQ(fx_floor_int(FX_CONST(2.75)), 2);
     CHECK_EQ(fx_floor_int(FX_MIN), -32768);
     CHECK_EQ(fx_to_u8(-1), 0);
     CHECK_EQ(fx_to_u8(FX_ONE), 255);
@@ -242,8 +242,8 @@ static void test_sat_from_q32_misc(void)
     CHECK_EQ(fx_to_u8(FX_HALF), 128); /* 127.5 ties up */
     CHECK_EQ(fx_to_u8(FX_ONE - 1), 255);
     CHECK_EQ(fx_to_u8(1), 0);
-    CHECK_EQ(FX(1.5), 0x18000);
-    CHECK_EQ(FX(-1.5), -0x18000);
+    CHECK_EQ(FX_CONST(1.5), 0x18000);
+    CHECK_EQ(FX_CONST(-1.5), -0x18000);
     CHECK_EQ(FX_INT(-3), -3 * 65536);
     long bad = 0;
     for (long i = 0; i < N_RANDOM; i++) {
@@ -274,9 +274,9 @@ static int edge_values(fx_t *out)
     static const fx_t fixed[] = {0,        1,          -1,         2,
                                  -2,       FX_MAX,     FX_MIN,     FX_MAX - 1,
                                  FX_MIN + 1, FX_ONE,   -FX_ONE,    FX_HALF,
-                                 -FX_HALF, FX(181.0),  FX(181.02), FX(181.0193),
+                                 -FX_HALF, FX_CONST(181.0),  FX_CONST(181.02), FX_CONST(181.0193),
                                  0xB504F3, 0xB504F4,   -0xB504F3,  -0xB504F4,
-                                 0xB504F2, FX(182.0),  FX(-181.0), 0x7FFF8000,
+                                 0xB504F2, FX_CONST(182.0),  FX_CONST(-181.0), 0x7FFF8000,
                                  0x8000,   0x7FFF,     0x10001,    0xFFFF};
     for (unsigned i = 0; i < sizeof fixed / sizeof fixed[0]; i++)
         out[n++] = fixed[i];
@@ -303,9 +303,9 @@ static void test_mul(void)
     CHECK_EQ(fx_mul(FX_MIN, FX_MAX), FX_MIN);
     CHECK_EQ(fx_mul(FX_MIN, -FX_ONE), FX_MAX);
     CHECK_EQ(fx_mul(FX_MIN, FX_ONE), FX_MIN);
-    CHECK_EQ(fx_mul(FX(181.0), FX(181.0)), FX(32761.0));
-    CHECK_EQ(fx_mul(FX(182.0), FX(182.0)), FX_MAX);
-    CHECK_EQ(fx_mul(FX(-182.0), FX(182.0)), FX_MIN);
+    CHECK_EQ(fx_mul(FX_CONST(181.0), FX_CONST(181.0)), FX_CONST(32761.0));
+    CHECK_EQ(fx_mul(FX_CONST(182.0), FX_CONST(182.0)), FX_MAX);
+    CHECK_EQ(fx_mul(FX_CONST(-182.0), FX_CONST(182.0)), FX_MIN);
     CHECK_EQ(fx_mul(1, FX_HALF), 1);   /* 0.5 ulp tie: toward +infinity */
     CHECK_EQ(fx_mul(-1, FX_HALF), 0);  /* -0.5 ulp tie: toward +infinity */
     CHECK_EQ(fx_mul(-1, FX_HALF + 1), -1);
@@ -372,8 +372,8 @@ static void test_div(void)
     CHECK_EQ(fx_div(1, 2 * FX_ONE), 1);   /* 0.5 ulp: away from zero */
     CHECK_EQ(fx_div(-1, 2 * FX_ONE), -1); /* -0.5 ulp: away from zero */
     CHECK_EQ(fx_div(1, 2 * FX_ONE + 1), 0);
-    CHECK_EQ(fx_div(FX(-16384.0), FX_HALF), FX_MIN); /* exactly -32768 */
-    CHECK_EQ(fx_div(FX(16384.0), FX_HALF), FX_MAX);
+    CHECK_EQ(fx_div(FX_CONST(-16384.0), FX_HALF), FX_MIN); /* exactly -32768 */
+    CHECK_EQ(fx_div(FX_CONST(16384.0), FX_HALF), FX_MAX);
     for (int i = 0; i < ne; i++)
         for (int j = 0; j < ne; j++, n++)
             check_div(e[i], e[j], &bad, &max_err);
@@ -467,8 +467,8 @@ static void test_sqrt(void)
     CHECK_EQ(fx_sqrt(-FX_ONE), 0);
     CHECK_EQ(fx_sqrt(FX_MIN), 0);
     CHECK_EQ(fx_sqrt(FX_ONE), FX_ONE);
-    CHECK_EQ(fx_sqrt(FX(4.0)), FX(2.0));
-    CHECK_EQ(fx_sqrt(FX(32761.0)), FX(181.0));
+    CHECK_EQ(fx_sqrt(FX_CONST(4.0)), FX_CONST(2.0));
+    CHECK_EQ(fx_sqrt(FX_CONST(32761.0)), FX_CONST(181.0));
     CHECK_EQ(fx_sqrt(FX_MAX), 0xB504F3); /* 181.019... */
     CHECK_EQ(fx_sqrt(1), 256);           /* sqrt(2^-16) = 2^-8 exactly */
     for (int i = 0; i < ne; i++, n++)

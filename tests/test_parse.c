@@ -504,6 +504,24 @@ static void test_defaults_and_layout(void)
     CHECK_EQ(S.background.r, 0);
     CHECK_EQ(S.n_objects, 0);
     CHECK_EQ(S.n_lights, 0);
+    /* A material built in C from rt_material_defaults() equals the parsed
+     * one, and the defaults are the documented decimals. */
+    CHECK(GOOD("material m color 0.5 0.25 1\n" CAM));
+    {
+        rt_material m;
+        rt_material_defaults(&m);
+        m.color.r = FX_CONST(0.5);
+        m.color.g = FX_CONST(0.25);
+        m.color.b = FX_CONST(1.0);
+        CHECK_EQ(rt_material_prepare(&m), RT_OK);
+        CHECK(memcmp(&m, &S.mat[0], sizeof m) == 0);
+        CHECK_EQ(m.ambient, FX_CONST(0.1));
+        CHECK_EQ(m.diffuse, FX_CONST(0.9));
+        CHECK_EQ(m.specular, FX_CONST(0.5));
+        CHECK_EQ(m.shininess, 10);
+        CHECK_EQ(m.ior, FX_CONST(1.0));
+        CHECK_EQ(m.reflect + m.transparency + m.bump + m.texture, 0);
+    }
     /* Statements in any order, fields in any order, blank lines, tabs,
      * comments glued to tokens, CRLF, a byte order mark. */
     CHECK(GOOD("\xEF\xBB\xBF# bom\r\n\r\n" CAM));
@@ -842,6 +860,14 @@ static void test_object_errors(void)
 
 static void test_lexical_errors(void)
 {
+    /* A quote that does not close on its line is reported at the quote;
+     * a closed one may hold spaces and '#', and stays one token. */
+    BAD(CAM "material m color 1 1 1\nmesh file \"a b.obj material m", PE, 3,
+        11, "unclosed quote");
+    BAD(CAM "material m color 1 1 1\nmesh file \"a b.obj\" material m",
+        RT_ERR_UNSUPPORTED, 3, 1, "'mesh' reads a file");
+    BAD(CAM "material m color 1 1 1\nsphere \"x # y\" 1", PE, 3, 8,
+        "'\"x # y\"'");
     BAD("camera eye 1e5 0 0 look 0 0 0", PE, 1, 12,
         "exponents are not supported (write the number out): '1e5'");
     BAD("camera eye 2.5E-3 0 0 look 0 0 0", PE, 1, 12, "exponents");

@@ -398,8 +398,8 @@ static void test_render_shading(void)
     CHECK_EQ(k.buf[0], 128); /* ka only: 0.5 * 255 rounds up */
     CHECK_EQ(k.buf[2], 128);
     m->ambient = 0;
-    m->diffuse = FX(0.6);
-    m->specular = FX(0.2);
+    m->diffuse = FX_CONST(0.6);
+    m->specular = FX_CONST(0.2);
     m->shininess = 7;
     s.n_lights = 1;
     s.light[0].pos = fv(0, 0, -10);
@@ -467,7 +467,7 @@ static void test_render_glass(void)
      * eta^2 sin^2 = 1.82 > 1, total internal reflection. */
     s.cam.eye = fv(0.9, 0, 0);
     s.cam.look = fv(0.9, 0, 1);
-    m->ior = FX(1.5);
+    m->ior = FX_CONST(1.5);
     CHECK_EQ(render(&s, 1, 1, 1, 1, &k, &st), RT_OK);
     CHECK_EQ(st.reflection, 1);
     CHECK_EQ(st.refraction, 0);
@@ -478,7 +478,7 @@ static void test_render_glass(void)
     s.background = rgb(0, 0, 1);
     m = add(&s, RT_QUAD, fv(-5, -5, 0), fv(10, 0, 0), fv(0, 10, 0), 0);
     m->transparency = FX_ONE;
-    m->ior = FX(1.5);
+    m->ior = FX_CONST(1.5);
     CHECK_EQ(render(&s, 1, 1, 1, 2, &k, &st), RT_OK);
     CHECK_EQ(k.buf[2], 255);
     CHECK(st.refraction == 1 && st.reflection == 0 && st.tests == 1);
@@ -506,8 +506,8 @@ static void test_render_texture_bands(void)
     CHECK(k.buf[0] == 255 && k.buf[3] == 255);
     CHECK(k.buf[8] == 255 && k.buf[11] == 255);
     /* Rows are independent: one band or two give the same bytes. */
-    m->bump = FX(0.3);
-    m->bump_scale = FX(0.5);
+    m->bump = FX_CONST(0.3);
+    m->bump_scale = FX_CONST(0.5);
     s.n_lights = 1;
     s.light[0].pos = fv(3, 4, -6);
     s.light[0].color = rgb(1, 1, 1);

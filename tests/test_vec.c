@@ -96,7 +96,7 @@ static long fails_shown;
 /* Edge components: 0, +-1, +-max, +-min, 181-ish, powers of two. */
 static const fx_t edges[] = {0,       1,          -1,        FX_MAX,
                              FX_MIN,  FX_MAX - 1, FX_MIN + 1, FX_ONE,
-                             -FX_ONE, FX(181.0),  FX(-182.0), 0x40000000,
+                             -FX_ONE, FX_CONST(181.0),  FX_CONST(-182.0), 0x40000000,
                              -0x40000000, 3,      -2,        FX_HALF};
 #define N_EDGES ((int)(sizeof edges / sizeof edges[0]))
 
@@ -252,12 +252,12 @@ static void test_length(void)
 {
     long bad = 0, n = 0;
     CHECK_EQ(fx_v3_length(fx_v3(0, 0, 0)), 0);
-    CHECK_EQ(fx_v3_length(fx_v3(FX(3.0), FX(4.0), 0)), FX(5.0));
+    CHECK_EQ(fx_v3_length(fx_v3(FX_CONST(3.0), FX_CONST(4.0), 0)), FX_CONST(5.0));
     CHECK_EQ(fx_v3_length(fx_v3(FX_ONE, 0, 0)), FX_ONE);
     CHECK_EQ(fx_v3_length(fx_v3(FX_MIN, 0, 0)), FX_MAX);
     CHECK_EQ(fx_v3_length(fx_v3(FX_MAX, 0, 0)), FX_MAX);
     CHECK_EQ(fx_v3_length(fx_v3(-FX_MAX, 0, 0)), FX_MAX);
-    CHECK_EQ(fx_v3_length(fx_v3(FX(-30000.0), FX(30000.0), 0)), FX_MAX);
+    CHECK_EQ(fx_v3_length(fx_v3(FX_CONST(-30000.0), FX_CONST(30000.0), 0)), FX_MAX);
     CHECK_EQ(fx_v3_length(fx_v3(1, 1, 0)), 1); /* sqrt(2) ulp */
     CHECK_EQ(fx_v3_length(fx_v3(1, 1, 1)), 2); /* sqrt(3) ulp */
     for (long i = 0; i < N_EDGE_VECS; i++, n++)

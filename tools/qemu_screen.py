@@ -6,7 +6,8 @@
 
 Starts QEMU with its monitor (QMP) on a unix socket, passes QEMU's
 stdout (the firmware's image through semihosting) straight on, and copies
-its stderr (the firmware's figures) line by line. When the firmware logs the line
+its stderr (the firmware's figures) line by line, without QEMU's notes
+that say nothing about the run (QEMU_NOISE). When the firmware logs the line
 "display_done" (port_display_done() in port/baremetal/board_lm3s6965.c)
 the picture is complete: this sends the monitor `screendump`, which writes
 SCREEN.ppm (512x256 for the lm3s6965evb OLED), then `quit`. A screendump
@@ -15,7 +16,7 @@ first has the display model redraw its memory into the console surface
 QEMU 7.2 does that for both monitors. QMP is used for its replies, one
 JSON line each. The exit status is QEMU's: 0 after a screendump, or the
 firmware's own when it exits without saying it is done (an error or a
-fault); SCREEN.ppm is then absent. mk/boards/lm3s6965.mk runs `make qemu` through it.
+fault); SCREEN.ppm is then absent. After a screendump it says "wrote SCREEN.ppm". mk/boards/lm3s6965.mk runs `make qemu` through it.
 """
 import json
 import os
@@ -25,6 +26,22 @@ import subprocess
 import sys
 import tempfile
 import time
+
+# QEMU's own notes that say nothing about the run, dropped from the log:
+# the lm3s6965evb timer model reports the firmware's unused timers, and
+# -icount with sleep=off warns when the firmware, done, waits for nothing.
+QEMU_NOISE = (
+    b"Timer with period zero, disabling",
+    b"qemu-system-arm: warning: icount sleep disabled and no active timers",
+)
+
+
+def copy_line(line):
+    """Passes one line of QEMU's stderr on, unless it is QEMU_NOISE."""
+    if line.strip() not in QEMU_NOISE:
+        sys.stderr.buffer.write(line)
+        sys.stderr.flush()
+
 
 def qmp(path, commands, timeout=30.0):
     """Connects to the QMP monitor at path and runs commands in turn, each
@@ -104,8 +121,7 @@ def main(argv):
     failed = False
     try:
         for line in proc.stderr:
-            sys.stderr.buffer.write(line)
-            sys.stderr.flush()
+            copy_line(line)
             if line.strip() == b"display_done":
                 try:
                     qmp(sock_path, [("screendump", {"filename": part}),
@@ -116,10 +132,12 @@ def main(argv):
                     proc.kill()
                 break
         for line in proc.stderr:  # whatever QEMU says on the way out
-            sys.stderr.buffer.write(line)
+            copy_line(line)
         rc = proc.wait()
         if not failed and os.path.exists(part):
             os.replace(part, screen)
+            sys.stderr.write("wrote %s (the panel, from QEMU's screendump)\n"
+                             % screen)
     finally:
         if proc.poll() is None:
             proc.kill()

@@ -32,9 +32,13 @@ typedef int32_t fx_t;
 #define FX_MAX ((fx_t)0x7FFFFFFF)
 #define FX_MIN ((fx_t)(-0x7FFFFFFF - 1))
 
-/* Compile-time constant from a decimal literal, rounded to nearest (ties
- * away from zero). The compiler folds it: only for constant expressions. */
-#define FX(x) ((fx_t)((x) >= 0 ? (x) * 65536.0 + 0.5 : (x) * 65536.0 - 0.5))
+/* Q16.16 constant from a decimal literal, rounded to nearest (ties away
+ * from zero): FX_CONST(1.5) is 0x18000. Only for constant expressions,
+ * which the compiler folds, so no floating point reaches the target; it
+ * serves initialisers (static const tables too). The core itself writes
+ * raw values, as it holds no floating-point literal. */
+#define FX_CONST(x)                                                           \
+    ((fx_t)((x) >= 0 ? (x) * 65536.0 + 0.5 : (x) * 65536.0 - 0.5))
 
 /* Integer to Q16.16; exact for |n| <= 32767 (callers keep it there). */
 #define FX_INT(n) ((fx_t)((n) * 65536))

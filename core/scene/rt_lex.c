@@ -183,6 +183,21 @@ rt_status rt_lex_next(rt_lex *p, rt_lex_token *tk)
             i++;
         if (i < p->line_end && t[i] != '#') {
             size_t s = i;
+            if (t[i] == '"') {
+                /* A quoted token (a path) may hold spaces and '#'; it
+                 * ends at the next '"' on the same line. */
+                for (i++; i < p->line_end && t[i] != '"'; i++)
+                    if ((unsigned char)t[i] < 0x20 ||
+                        (unsigned char)t[i] > 0x7e)
+                        return bad_byte(p, i);
+                if (i == p->line_end) {
+                    rt_lex_token q = {s, 1, p->line_off, p->line};
+                    return rt_lex_fail(p, &q, RT_ERR_PARSE,
+                                       "unclosed quote: this '\"' has no "
+                                       "closing '\"' on its line");
+                }
+                i++;
+            }
             for (; i < p->line_end && t[i] != ' ' && t[i] != '\t' &&
                    t[i] != '#'; i++)
                 if ((unsigned char)t[i] < 0x21 || (unsigned char)t[i] > 0x7e)

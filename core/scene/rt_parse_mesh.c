@@ -41,7 +41,7 @@ rt_status rt_parse_mesh(rt_lex *p, const rt_lex_token *kw, rt_scene *s,
             TRY(rt_lex_next(p, &file));
             if (file.len == 0)
                 return rt_lex_need(p, &file, "file", NULL, 1, "path");
-            /* Quotes are optional; the path cannot hold spaces. */
+            /* Quotes are optional; a quoted path may hold spaces. */
             if (file.len >= 2 && p->t[file.off] == '"' &&
                 p->t[file.off + file.len - 1] == '"') {
                 file.off++;

@@ -11,17 +11,13 @@
 #error "the 'caps' words are listed in RT_CAP_* bit order"
 #endif
 
-/* Value limits (raw Q16.16) and the defaults the format documents. */
+/* Value limits (raw Q16.16); the defaults are rt_material_defaults()'s. */
 #define IOR_MIN ((fx_t)655)  /* 0.01, as the parser rounds it */
 #define IOR_MAX FX_INT(100)
 #define BUMP_MAX FX_INT(4)
 /* Texture and bump sizes: at least one ulp, the limit stated for a size
  * that rounds to 0 too. Cells are exact at any size (rt_texture.c). */
 #define SIZE_RULE "at least 0.0000153 (2^-16, the smallest Q16.16 step)"
-#define DEF_AMBIENT ((fx_t)6554)  /* 0.1 */
-#define DEF_DIFFUSE ((fx_t)58982) /* 0.9 */
-#define DEF_SPECULAR FX_HALF
-#define DEF_SHININESS 10u
 
 /* ---- Materials ---------------------------------------------------------- */
 
@@ -152,12 +148,7 @@ rt_status rt_parse_material(rt_lex *p, const rt_lex_token *kw, rt_scene *s,
         return RT_ERR_PARSE;
     }
     m = &s->mat[s->n_materials];
-    memset(m, 0, sizeof *m);
-    m->ambient = DEF_AMBIENT;
-    m->diffuse = DEF_DIFFUSE;
-    m->specular = DEF_SPECULAR;
-    m->shininess = DEF_SHININESS;
-    m->ior = FX_ONE;
+    rt_material_defaults(m);
     for (;;) {
         TRY(rt_lex_next_key(p, "material", mat_keys, at, &seen, &k));
         if (k < 0)

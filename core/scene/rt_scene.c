@@ -26,6 +26,16 @@ void rt_scene_init(rt_scene *s)
     s->shadows = 1;
 }
 
+void rt_material_defaults(rt_material *m)
+{
+    memset(m, 0, sizeof *m);
+    m->ambient = (fx_t)6554;  /* 0.1 */
+    m->diffuse = (fx_t)58982; /* 0.9 */
+    m->specular = FX_HALF;
+    m->shininess = 10;
+    m->ior = FX_ONE;
+}
+
 static int is_zero(fx_vec3 v)
 {
     return v.x == 0 && v.y == 0 && v.z == 0;

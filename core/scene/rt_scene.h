@@ -187,6 +187,13 @@ rt_status rt_object_prepare(rt_object *o);
  * RT_ERR_ARG. Costs a pass over the mesh. */
 rt_status rt_mesh_prepare(rt_object *o);
 
+/* Fills a material with the scene language's defaults (docs/scene-format.md):
+ * black, ambient 0.1, diffuse 0.9, specular 0.5, shininess 10, ior 1, no
+ * reflection, transparency, texture or bump. The parser starts every
+ * material from it; set the colour and what else differs, then call
+ * rt_material_prepare(). */
+void rt_material_defaults(rt_material *m);
+
 /* Derives a material's constants (reciprocal scales). Returns RT_OK, or
  * RT_ERR_ARG for a zero texture or bump scale. */
 rt_status rt_material_prepare(rt_material *m);

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Renders a scene to a 160x128 SPI display, one RGB565 row at a time. */
-#include "rt_parse.h"
-#include "rt_render.h"
+#include <fixtrace/rt_parse.h>
+#include <fixtrace/rt_render.h>
 
 #define LCD_W 160
 #define LCD_H 128

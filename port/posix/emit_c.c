@@ -289,7 +289,19 @@ int emit_c_scene(FILE *f, const rt_scene *s, const char *source)
           " 1.0); the\n"
           " * derived fields are the host's, which are exact on the device"
           " too.\n */\n", f);
+    /* The core's own tree has its folders on the include path; a package
+     * user has include/fixtrace/ only. */
+    put(&e, "#if defined(__has_include)");
+    put(&e, "#if !__has_include(\"rt_mesh.h\") && "
+            "__has_include(<fixtrace/rt_mesh.h>)");
+    put(&e, "#define FW_SCENE_PACKAGE 1");
+    put(&e, "#endif");
+    put(&e, "#endif");
+    put(&e, "#ifdef FW_SCENE_PACKAGE");
+    put(&e, "#include <fixtrace/rt_mesh.h>");
+    put(&e, "#else");
     put(&e, "#include \"rt_mesh.h\"");
+    put(&e, "#endif");
     fputc('\n', f);
     put(&e, "/* The scene's counts, at least 1 (they size arrays). */");
     put(&e, "#define FW_SCENE_OBJECTS %u", at_least_1(n_obj));

@@ -24,12 +24,11 @@
 #include "image_out.h"
 #include "progress.h"
 #include "receive.h"
+#include "fixtrace_version.h"
 #include "ref_render.h"
 #include "rt_panel.h"
 #include "rt_parse.h"
 #include "rt_render.h"
-
-#define FIXTRACE_VERSION "0.1.0"
 
 static volatile sig_atomic_t interrupted;
 
@@ -74,6 +73,7 @@ static void usage(FILE *f)
 "    fixtrace [options] SCENE\n"
 "    fixtrace compare A.ppm B.ppm [--diff D.ppm] [--min-psnr DB] [--max-bad PCT]\n"
 "                     [--max-interior-outliers N]\n"
+"    fixtrace receive -o OUT.png|OUT.ppm [-i INPUT] [-q]\n"
 "\n"
 "DESCRIPTION\n"
 "    Renders the scene file SCENE (see docs/scene-format.md) and writes\n"
@@ -88,12 +88,19 @@ static void usage(FILE *f)
 "    The image is written to a temporary file beside the output and\n"
 "    renamed into place only when the render succeeds.\n"
 "\n"
+"    fixtrace compare compares two images (fixtrace compare --help).\n"
+"    fixtrace receive reads the firmware's UART output (make firmware\n"
+"    OUTPUT=uart) from INPUT or stdin and writes its image once the\n"
+"    frame's checksum holds (fixtrace receive --help).\n"
+"\n"
 "OPTIONS\n"
 "    -o, --output FILE   output image (default: SCENE's name with .ppm, in\n"
 "                        the current directory); - writes PPM to stdout\n"
 "                        (a pipe or a file, never a terminal)\n"
 "    -W, --width N       image width, 1..4096 (default: the scene's)\n"
-"    -H, --height N      image height, 1..4096 (default: the scene's)\n"
+"    -H, --height N      image height, 1..4096 (default: the scene's);\n"
+"                        given alone, -W or -H keeps the scene's aspect\n"
+"                        ratio (the other side is scaled, rounded)\n"
 "    -s, --spp N         samples per pixel: 1, 4, 9 or 16 (default: the\n"
 "                        scene's)\n"
 "    -d, --depth N       reflection/refraction depth, 0..RT_MAX_DEPTH (5)\n"
@@ -197,7 +204,7 @@ static int parse_args(int argc, char **argv, cli *c)
             exit(0);
         } else if (strcmp(a, "--version") == 0) {
             printf("fixtrace %s (Q16.16, RT_MAX_DEPTH %d, RT_MAX_OBJECTS %d)\n",
-                   FIXTRACE_VERSION, RT_MAX_DEPTH, RT_MAX_OBJECTS);
+                   FIXTRACE_VERSION_STRING, RT_MAX_DEPTH, RT_MAX_OBJECTS);
             exit(0);
         } else if (TAKE("-o", "--output")) {
             if (c->out_path)
@@ -437,16 +444,29 @@ static const char *status_text(rt_status st)
     }
 }
 
+/* -W and -H: both set the size; one alone scales the scene's other side
+ * by the same factor (rounded, at least 1, at most the limit). */
+static void apply_size(const cli *c, rt_options *o)
+{
+    long w = c->width, h = c->height;
+    if (w && !h)
+        h = (2L * w * o->height + o->width) / (2L * o->width);
+    else if (h && !w)
+        w = (2L * h * o->width + o->height) / (2L * o->height);
+    if (w) {
+        o->width = (uint16_t)(w < 1 ? 1 : w > RT_MAX_WIDTH ? RT_MAX_WIDTH : w);
+        o->height =
+            (uint16_t)(h < 1 ? 1 : h > RT_MAX_HEIGHT ? RT_MAX_HEIGHT : h);
+    }
+}
+
 static int render_scene(const cli *c, const rt_scene *scene)
 {
     job j;
     memset(&j, 0, sizeof j);
     j.scene = scene;
     rt_options_from_scene(&j.opt, scene);
-    if (c->width)
-        j.opt.width = (uint16_t)c->width;
-    if (c->height)
-        j.opt.height = (uint16_t)c->height;
+    apply_size(c, &j.opt);
     if (c->spp)
         j.opt.spp = (uint8_t)c->spp;
     if (c->depth)

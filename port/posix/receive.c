@@ -25,6 +25,8 @@
 #define FRAME_HEADER 12 /* bytes after the magic */
 #define FRAME_MAX_SIDE 16384
 #define EOT 0x04
+/* The device's text comes in short lines; a longer "line" is binary. */
+#define LINE_MAX_TEXT 160
 
 static const uint8_t magic[4] = { 'F', 'X', 'I', 'M' };
 
@@ -33,6 +35,10 @@ typedef struct {
     uint8_t buf[4096];
     size_t pos, len;
     int err; /* errno of a failed read */
+    unsigned long hidden; /* bytes outside the frame not shown as text */
+    char line[LINE_MAX_TEXT]; /* the device's text line being read */
+    size_t line_len;
+    int line_bad; /* the line holds a byte that is not text */
 } reader;
 
 /* The next byte, or -1 at the end of the input (or on a read error). */
@@ -76,6 +82,32 @@ static size_t read_bytes(reader *r, uint8_t *p, size_t n)
     return got;
 }
 
+/* Shows the device's text on stderr a line at a time, and only lines of
+ * printable ASCII no longer than LINE_MAX_TEXT, so that binary input (a
+ * wrong port speed, an image file) never reaches the terminal; the bytes
+ * of other lines are counted in r->hidden. c < 0 flushes the last line. */
+static void show_text(reader *r, int c)
+{
+    if (c >= 0 && c != '\n') {
+        if (r->line_len == sizeof r->line) {
+            r->hidden += r->line_len;
+            r->line_len = 0;
+            r->line_bad = 1;
+        }
+        r->line[r->line_len++] = (char)c;
+        if (!((c >= 0x20 && c < 0x7f) || c == '\r' || c == '\t'))
+            r->line_bad = 1;
+        return;
+    }
+    if (r->line_bad)
+        r->hidden += r->line_len + (c == '\n');
+    else if (r->line_len > 0 || c == '\n')
+        fprintf(stderr, "%.*s%s", (int)r->line_len, r->line,
+                c == '\n' ? "\n" : "");
+    r->line_len = 0;
+    r->line_bad = 0;
+}
+
 /* Copies the device's text to stderr up to the frame's magic (returns 1)
  * or to an EOT or the end of the input (returns 0). */
 static int text_until_magic(reader *r, int show)
@@ -86,18 +118,23 @@ static int text_until_magic(reader *r, int show)
         if (c < 0 || c == EOT)
             break;
         if (c == magic[k]) {
-            if (++k == sizeof magic)
+            if (++k == sizeof magic) {
+                if (show)
+                    show_text(r, -1);
                 return 1;
+            }
             continue;
         }
-        if (show)
-            fwrite(magic, 1, k, stderr);
+        for (size_t j = 0; show && j < k; j++)
+            show_text(r, magic[j]);
         k = c == magic[0];
         if (!k && show)
-            fputc(c, stderr);
+            show_text(r, c);
     }
+    for (size_t j = 0; show && j < k; j++)
+        show_text(r, magic[j]);
     if (show)
-        fwrite(magic, 1, k, stderr);
+        show_text(r, -1);
     return 0;
 }
 
@@ -127,6 +164,12 @@ static int receive(reader *r, const char *in_name, const char *out,
         if (r->err)
             fprintf(stderr, "fixtrace receive: cannot read %s: %s\n",
                     in_name, strerror(r->err));
+        else if (r->hidden)
+            fprintf(stderr, "fixtrace receive: no image frame in %s (no "
+                    "\"FXIM\" before the end of the input); %lu bytes of "
+                    "it are not text and were not shown: is it the "
+                    "firmware's UART output (make firmware OUTPUT=uart), "
+                    "read at the right speed?\n", in_name, r->hidden);
         else
             fprintf(stderr, "fixtrace receive: no image frame in %s (no "
                     "\"FXIM\" before the end of the input)\n", in_name);

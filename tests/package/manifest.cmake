@@ -1,0 +1,56 @@
+# SPDX-License-Identifier: MIT
+# Reads what a CMake-based packaging manifest builds, for
+# tests/suite_package.sh: runs the module's own CMake code in script mode
+# (cmake -P) with the build system's functions replaced by ones that
+# record their arguments in OUT, one "KIND value" a line (SRC, INC, DEF,
+# OPT). KIND=zephyr: zephyr/CMakeLists.txt, with the CONFIG_* values given
+# as -D. KIND=idf: the top-level CMakeLists.txt with ESP_PLATFORM set,
+# which registers the component (cmake/esp-idf.cmake).
+#   cmake -DKIND=zephyr|idf -DROOT=DIR -DOUT=FILE [-DCONFIG_X=v...] -P this
+file(WRITE ${OUT} "")
+function(record kind)
+    foreach(a ${ARGN})
+        file(APPEND ${OUT} "${kind} ${a}\n")
+    endforeach()
+endfunction()
+
+if(KIND STREQUAL zephyr)
+    function(zephyr_library_named name)
+    endfunction()
+    function(zephyr_library_sources)
+        record(SRC ${ARGN})
+    endfunction()
+    function(zephyr_include_directories)
+        record(INC ${ARGN})
+    endfunction()
+    function(zephyr_compile_definitions)
+        record(DEF ${ARGN})
+    endfunction()
+    function(zephyr_library_compile_options)
+        record(OPT ${ARGN})
+    endfunction()
+    include(${ROOT}/zephyr/CMakeLists.txt)
+elseif(KIND STREQUAL idf)
+    set(ESP_PLATFORM 1)
+    set(COMPONENT_DIR ${ROOT})
+    function(idf_component_register)
+        cmake_parse_arguments(A "" "" "SRCS;INCLUDE_DIRS;PRIV_INCLUDE_DIRS;REQUIRES;PRIV_REQUIRES" ${ARGN})
+        record(SRC ${A_SRCS})
+        foreach(d ${A_INCLUDE_DIRS} ${A_PRIV_INCLUDE_DIRS})
+            if(NOT IS_ABSOLUTE ${d})
+                set(d ${COMPONENT_DIR}/${d})
+            endif()
+            record(INC ${d})
+        endforeach()
+        set(COMPONENT_LIB __idf_fixtrace PARENT_SCOPE)
+    endfunction()
+    function(target_compile_options target scope)
+        record(OPT ${ARGN})
+    endfunction()
+    function(target_compile_definitions target scope)
+        record(DEF ${ARGN})
+    endfunction()
+    include(${ROOT}/CMakeLists.txt)
+else()
+    message(FATAL_ERROR "KIND must be zephyr or idf")
+endif()
