@@ -1,0 +1,98 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * rt_shape: the one dispatch from an object's kind to its shape's file
+ * (rt_kinds.h lists what each provides). Every shape but the quad is
+ * first tested against its bounding sphere, with the geometric form
+ * (closest approach, then the chord), exact in 64 bits at any distance
+ * (rt_bsphere.h; docs/numerics.md).
+ */
+#include "rt_kinds.h"
+#include "rt_mesh.h"
+
+rt_status rt_object_prepare(rt_object *o)
+{
+    rt_status st;
+    o->flat = 0;
+    switch (o->kind) {
+    case RT_SPHERE:
+        st = rt_sphere_prepare(o);
+        break;
+    case RT_QUAD:
+        st = rt_quad_prepare(o);
+        break;
+    case RT_BOX:
+        st = rt_box_prepare(o);
+        break;
+    case RT_CYLINDER:
+    case RT_CONE:
+        st = rt_upright_prepare(o);
+        break;
+    case RT_MESH:
+        st = rt_mesh_prepare(o);
+        break;
+    default:
+        return RT_ERR_ARG;
+    }
+    o->small = st == RT_OK && o->br < ((fx_t)1 << 29) && fx_v3_small(o->bc);
+    return st;
+}
+
+int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
+                 fx_t *t, uint16_t *part)
+{
+    /* A kind this build removed never hits (rendering refuses scenes
+     * with one): its case falls out of the switch. */
+    switch (o->kind) {
+    case RT_SPHERE:
+        if (!RT_HAS_SPHERE)
+            break;
+        return rt_sphere_hit(o, r, tmin, tmax, t, part);
+    case RT_QUAD:
+        if (!RT_HAS_QUAD)
+            break;
+        return rt_quad_hit(o, r, tmin, tmax, t, part);
+    case RT_BOX:
+        if (!RT_HAS_BOX)
+            break;
+        return rt_box_hit(o, r, tmin, tmax, t, part);
+    case RT_CYLINDER:
+    case RT_CONE:
+        if (!RT_HAS_UPRIGHT)
+            break;
+        return rt_upright_hit(o, r, tmin, tmax, t, part);
+    case RT_MESH:
+        if (!RT_HAS_MESH)
+            break;
+        return rt_mesh_hit_bounded(o, r, tmin, tmax, t, part);
+    default:
+        break;
+    }
+    return 0;
+}
+
+fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *p,
+                  uint16_t part, int precise)
+{
+    switch (o->kind) {
+    case RT_SPHERE:
+        if (RT_HAS_SPHERE)
+            return rt_sphere_normal(o, *p);
+        break;
+    case RT_BOX:
+        if (RT_HAS_BOX)
+            return rt_box_normal(o, *p, part);
+        break;
+    case RT_CYLINDER:
+    case RT_CONE:
+        if (RT_HAS_UPRIGHT)
+            return rt_upright_normal(o, r, t, p, part, precise);
+        break;
+    case RT_MESH:
+        if (RT_HAS_MESH)
+            return rt_mesh_normal(o, *p, part);
+        break;
+    default:
+        break;
+    }
+    return o->n; /* a quad's; a removed kind is never hit */
+}
