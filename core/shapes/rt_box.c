@@ -4,11 +4,14 @@
  * sphere. The hit's part is the axis of the face; a face's distance is
  * taken as a flat quad's (rt_plane_t), so a face lying in a floor's plane
  * ties with it exactly.
+ *
+ * Part of the dispatch unit: rt_shape.c includes this file (its comment
+ * says why); compiled alone it defines nothing.
  */
 #include "rt_bsphere.h"
 #include "rt_kinds.h"
 
-rt_status rt_box_prepare(rt_object *o)
+static inline rt_status box_prepare(rt_object *o)
 {
     if (o->b.x <= o->a.x || o->b.y <= o->a.y || o->b.z <= o->a.z)
         return RT_ERR_DEGENERATE;
@@ -21,23 +24,6 @@ rt_status rt_box_prepare(rt_object *o)
     return RT_OK;
 }
 
-int64_t rt_plane_t(int64_t p, fx_t o, int32_t d)
-{
-    int64_t dp = p - o; /* |p - o| < 2^33 */
-    int neg = (dp < 0) != (d < 0);
-    uint64_t adp = (uint64_t)(dp < 0 ? -dp : dp);
-    uint32_t ud = (uint32_t)(d < 0 ? -(int64_t)d : d); /* <= 2^FX_UBITS */
-    /* t = |p - o| 2^FX_UBITS / |d| in Q16.16; at |p - o| >= 2^32 it is
-     * 2^32 or more, as |d| <= 2^FX_UBITS. */
-    if ((adp >> 32) != 0 || ((adp << FX_UBITS) >> 32) >= ud)
-        return neg ? -INT64_MAX : INT64_MAX;
-    /* Rounded: floor((n + floor(d / 2)) / d), as a quad's. */
-    uint64_t un = (adp << FX_UBITS) + (ud >> 1);
-    if ((un >> 32) >= ud)
-        return neg ? -INT64_MAX : INT64_MAX;
-    int64_t q = fx_udiv64_32(un, ud);
-    return neg ? -q : q;
-}
 
 /* 1 / d for a unit component d != 0, to 32 bits whatever its size:
  * 1 / |d| = m 2^c / 2^63 for d normalised by c leading zeros. */
@@ -64,7 +50,7 @@ static fx_t slab_t(const slab_inv *v, fx_t x)
     return fx_sat64(v->neg ? -q : q);
 }
 
-int rt_box_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
+static inline int box_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                fx_t *t, uint16_t *part)
 {
     {
@@ -137,7 +123,7 @@ int rt_box_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
     return 0;
 }
 
-fx_dir3 rt_box_normal(const rt_object *o, fx_vec3 p, unsigned part)
+static inline fx_dir3 box_normal(const rt_object *o, fx_vec3 p, unsigned part)
 {
     /* part is the axis of the face; its side is the one p lies on. */
     const fx_t pc[3] = { p.x, p.y, p.z };

@@ -1,10 +1,13 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * rt_bsphere: the bounding-sphere test's rare case, a ray within rounding
- * of the sphere's silhouette (rt_bsphere.h states the contract). Out of
- * line, so that the inlined common test stays small in every shape.
+ * rt_bsphere: what the hit tests share out of line: the bounding-sphere
+ * test's rare case, a ray within rounding of the sphere's silhouette
+ * (rt_bsphere.h states the contract), kept out of line so that the
+ * inlined common test stays small in every shape; and the distance to an
+ * axis-aligned plane (rt_kinds.h).
  */
 #include "rt_bsphere.h"
+#include "rt_kinds.h"
 
 int rt_bsphere_fine(const fx_vec3 *c, int64_t t, const rt_ray *ray, fx_t r,
                     uint64_t *disc)
@@ -29,4 +32,22 @@ int rt_bsphere_fine(const fx_vec3 *c, int64_t t, const rt_ray *ray, fx_t r,
         return 0;
     *disc = (r2 - h2) >> (2 * e);
     return 1;
+}
+
+int64_t rt_plane_t(int64_t p, fx_t o, int32_t d)
+{
+    int64_t dp = p - o; /* |p - o| < 2^33 */
+    int neg = (dp < 0) != (d < 0);
+    uint64_t adp = (uint64_t)(dp < 0 ? -dp : dp);
+    uint32_t ud = (uint32_t)(d < 0 ? -(int64_t)d : d); /* <= 2^FX_UBITS */
+    /* t = |p - o| 2^FX_UBITS / |d| in Q16.16; at |p - o| >= 2^32 it is
+     * 2^32 or more, as |d| <= 2^FX_UBITS. */
+    if ((adp >> 32) != 0 || ((adp << FX_UBITS) >> 32) >= ud)
+        return neg ? -INT64_MAX : INT64_MAX;
+    /* Rounded: floor((n + floor(d / 2)) / d), as a quad's. */
+    uint64_t un = (adp << FX_UBITS) + (ud >> 1);
+    if ((un >> 32) >= ud)
+        return neg ? -INT64_MAX : INT64_MAX;
+    int64_t q = fx_udiv64_32(un, ud);
+    return neg ? -q : q;
 }

@@ -1,49 +1,42 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * rt_kinds: what each kind of shape provides to the one dispatch
- * (rt_shape.c, behind rt_shape.h). A shape is one file: rt_sphere.c,
- * rt_quad.c, rt_box.c, rt_upright.c (cylinders and cones, with their
- * precise normals in rt_upright_normal.c) and rt_mesh*.c. Adding a kind
- * means a new file with these four functions, their prototypes here and
- * one case in each switch of rt_shape.c. Internal to core/shapes.
+ * rt_kinds: what the shapes' files share, and the out-of-line parts of
+ * some. Internal to core/shapes.
  *
- *   prepare  derives the kind's constants and its bounding sphere (bc, br)
- *            from the fields the scene sets; RT_OK or RT_ERR_DEGENERATE
- *   hit      the nearest t with tmin < t < tmax (rt_intersect's contract)
- *   normal   the outward unit normal at a hit (rt_normal's contract)
+ * A shape is one file: rt_sphere.c, rt_quad.c, rt_box.c, rt_upright.c
+ * (cylinders and cones; their precise normals in rt_upright_normal.c) and
+ * rt_mesh.c (with rt_mesh_check.c and rt_mesh_normal.c). Each provides
  *
- * Row culling and the direction grids need only the bounding sphere, the
- * kind and, for a quad, its plane (n, dist): fields prepare sets.
+ *   KIND_prepare  derives the kind's constants and its bounding sphere
+ *                 (bc, br) from the fields the scene sets; RT_OK or
+ *                 RT_ERR_DEGENERATE
+ *   KIND_hit      the nearest t with tmin < t < tmax (rt_intersect's
+ *                 contract)
+ *   KIND_normal   the outward unit normal at a hit (rt_normal's contract)
+ *
+ * and rt_shape.c dispatches on the kind, one switch each. Row culling and
+ * the direction grids need only the bounding sphere, the kind and, for a
+ * quad, its plane (n, dist): fields prepare sets. Adding a kind is one
+ * file and one case in each switch.
  */
 #ifndef RT_KINDS_H
 #define RT_KINDS_H
 
-#include "rt_shape.h"
+#include "rt_ray.h"
 
 /* Raw ulps added to bounding-sphere radii, which must never cull a ray
  * that meets the shape. */
 #define RT_BOUND_MARGIN 8
 
-rt_status rt_sphere_prepare(rt_object *o);
-int rt_sphere_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
-                  fx_t *t, uint16_t *part);
-fx_dir3 rt_sphere_normal(const rt_object *o, fx_vec3 p);
-
-rt_status rt_quad_prepare(rt_object *o);
-int rt_quad_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
-                fx_t *t, uint16_t *part);
-
-rt_status rt_box_prepare(rt_object *o);
-int rt_box_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
-               fx_t *t, uint16_t *part);
-fx_dir3 rt_box_normal(const rt_object *o, fx_vec3 p, unsigned part);
-
 /* Cylinders (RT_CYLINDER) and cones (RT_CONE). */
-rt_status rt_upright_prepare(rt_object *o);
-int rt_upright_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
-                   fx_t *t, uint16_t *part);
 fx_dir3 rt_upright_normal(const rt_object *o, const rt_ray *r, fx_t t,
                           fx_vec3 *p, unsigned part, int precise);
+
+/* Where ray r meets the side of cylinder or cone o near its side root t,
+ * from Newton steps at the unrounded o + t d (as rt_normal's for a
+ * reflective side): 1 with *t30, the distance with 30 fraction bits; 0
+ * where the steps decline (a ray within rounding of tangent). */
+int rt_side_root(const rt_object *o, const rt_ray *r, fx_t t, int64_t *t30);
 
 /* A mesh's bounding sphere, then its hierarchy (rt_mesh_hit). */
 int rt_mesh_hit_bounded(const rt_object *o, const rt_ray *r, fx_t tmin,

@@ -6,6 +6,9 @@
  * coordinates along the unit axes pu and pv. The normal is the prepared
  * unit n. A flat quad (normal along y, axes along x and z: a floor) skips
  * the zero terms.
+ *
+ * Part of the dispatch unit: rt_shape.c includes this file (its comment
+ * says why); compiled alone it defines nothing.
  */
 #include "rt_bsphere.h"
 #include "rt_kinds.h"
@@ -19,7 +22,7 @@ static int is_zero(fx_vec3 v)
     return v.x == 0 && v.y == 0 && v.z == 0;
 }
 
-rt_status rt_quad_prepare(rt_object *o)
+static inline rt_status quad_prepare(rt_object *o)
 {
     fx_vec3 e1 = o->b, e2 = o->c;
     if (is_zero(e1) || is_zero(e2))
@@ -185,7 +188,7 @@ static inline int quad_uv(const rt_object *o, const rt_ray *r, fx_t tt,
     if (!(o->small && r->small && (uint32_t)tt < ((uint32_t)1 << 29)))
         return quad_uv_wide(o, r, tt, pu, pv);
     /* The usual case, in 32 bits: a within 2^30 (its ball within 2^29,
-     * rt_quad_prepare), o within 2^29 and t d rounded within 2^29, so each
+     * quad_prepare), o within 2^29 and t d rounded within 2^29, so each
      * component of q is below 2^31, and mul_round_u is the rounding of
      * quad_uv_wide. */
     const int32_t x = r->o.x - o->a.x + mul_round_u(tt, r->d.x);
@@ -206,7 +209,7 @@ static inline int quad_uv(const rt_object *o, const rt_ray *r, fx_t tt,
     return 1;
 }
 
-int rt_quad_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
+static inline int quad_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                 fx_t *t, uint16_t *part)
 {
     /* A flat quad (rt_object.flat) has n = (0, n.y, 0). */
@@ -222,7 +225,7 @@ int rt_quad_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
         return 0;
     /* The common case first, without the 64-bit bounds below: high words
      * of u and v in [0, lu 2^(FX_UBITS - 32)) and [0, lv 2^(FX_UBITS -
-     * 32)) are inside them (lu, lv > 0, rt_quad_prepare). */
+     * 32)) are inside them (lu, lv > 0, quad_prepare). */
     if ((uint32_t)((uint64_t)u >> 32) <
             (uint32_t)o->lu >> ((32 - FX_UBITS) & 31) &&
         (uint32_t)((uint64_t)v >> 32) <

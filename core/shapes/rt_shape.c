@@ -1,13 +1,26 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * rt_shape: the one dispatch from an object's kind to its shape's file
- * (rt_kinds.h lists what each provides). Every shape but the quad is
- * first tested against its bounding sphere, with the geometric form
- * (closest approach, then the chord), exact in 64 bits at any distance
- * (rt_bsphere.h; docs/numerics.md).
+ * rt_shape: the dispatch from an object's kind to its shape (rt_kinds.h
+ * lists what each provides). Every shape but the quad is first tested
+ * against its bounding sphere, with the geometric form (closest approach,
+ * then the chord), exact in 64 bits at any distance (rt_bsphere.h;
+ * docs/numerics.md).
+ *
+ * The sphere's, quad's, box's and upright shapes' files are included
+ * here, their functions static: one unit, so that the compiler inlines
+ * each hit test into rt_intersect's switch, as it would in one file. A
+ * call from the switch into a test in another unit, or the switch inlined
+ * into the searches, costs the searches more than the whole issue's
+ * budget on the Cortex-M3 (CHANGELOG.md). Each of those files compiled
+ * alone defines nothing.
  */
-#include "rt_kinds.h"
+#include "rt_shape.h"
 #include "rt_mesh.h"
+
+#include "rt_sphere.c"
+#include "rt_quad.c"
+#include "rt_box.c"
+#include "rt_upright.c"
 
 rt_status rt_object_prepare(rt_object *o)
 {
@@ -15,17 +28,17 @@ rt_status rt_object_prepare(rt_object *o)
     o->flat = 0;
     switch (o->kind) {
     case RT_SPHERE:
-        st = rt_sphere_prepare(o);
+        st = sphere_prepare(o);
         break;
     case RT_QUAD:
-        st = rt_quad_prepare(o);
+        st = quad_prepare(o);
         break;
     case RT_BOX:
-        st = rt_box_prepare(o);
+        st = box_prepare(o);
         break;
     case RT_CYLINDER:
     case RT_CONE:
-        st = rt_upright_prepare(o);
+        st = upright_prepare(o);
         break;
     case RT_MESH:
         st = rt_mesh_prepare(o);
@@ -46,20 +59,20 @@ int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
     case RT_SPHERE:
         if (!RT_HAS_SPHERE)
             break;
-        return rt_sphere_hit(o, r, tmin, tmax, t, part);
+        return sphere_hit(o, r, tmin, tmax, t, part);
     case RT_QUAD:
         if (!RT_HAS_QUAD)
             break;
-        return rt_quad_hit(o, r, tmin, tmax, t, part);
+        return quad_hit(o, r, tmin, tmax, t, part);
     case RT_BOX:
         if (!RT_HAS_BOX)
             break;
-        return rt_box_hit(o, r, tmin, tmax, t, part);
+        return box_hit(o, r, tmin, tmax, t, part);
     case RT_CYLINDER:
     case RT_CONE:
         if (!RT_HAS_UPRIGHT)
             break;
-        return rt_upright_hit(o, r, tmin, tmax, t, part);
+        return upright_hit(o, r, tmin, tmax, t, part);
     case RT_MESH:
         if (!RT_HAS_MESH)
             break;
@@ -76,11 +89,11 @@ fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *p,
     switch (o->kind) {
     case RT_SPHERE:
         if (RT_HAS_SPHERE)
-            return rt_sphere_normal(o, *p);
+            return sphere_normal(o, *p);
         break;
     case RT_BOX:
         if (RT_HAS_BOX)
-            return rt_box_normal(o, *p, part);
+            return box_normal(o, *p, part);
         break;
     case RT_CYLINDER:
     case RT_CONE:

@@ -5,12 +5,12 @@
 #ifndef RT_SHAPE_H
 #define RT_SHAPE_H
 
-#include "rt_ray.h"
+#include "rt_kinds.h"
 
 /* Ray-object intersection: the nearest t with tmin < t < tmax. Returns 1
  * and sets *t and *part (which face, cap or side; a mesh's triangle) on a
- * hit, else 0. A kind
- * this build removed (RT_NO_SPHERE, ...) never hits. */
+ * hit, else 0. A kind this build removed (RT_NO_SPHERE, ...) never
+ * hits. */
 int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                  fx_t *t, uint16_t *part);
 
@@ -84,11 +84,5 @@ static inline int rt_passes_by(const rt_object *o, const rt_ray *r,
  * (rt_upright_normal.c). */
 fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *p,
                   uint16_t part, int precise);
-
-/* Where ray r meets the side of cylinder or cone o near its side root t,
- * from Newton steps at the unrounded o + t d (as rt_normal's for a
- * reflective side): 1 with *t30, the distance with 30 fraction bits; 0
- * where the steps decline (a ray within rounding of tangent). */
-int rt_side_root(const rt_object *o, const rt_ray *r, fx_t t, int64_t *t30);
 
 #endif /* RT_SHAPE_H */

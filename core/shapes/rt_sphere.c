@@ -3,11 +3,14 @@
  * rt_sphere: spheres (centre a, radius r). The sphere is its own bounding
  * sphere, so its hit is the bounding test's chord; its normal is (p - a)
  * scaled by a reciprocal of r prepared once.
+ *
+ * Part of the dispatch unit: rt_shape.c includes this file (its comment
+ * says why); compiled alone it defines nothing.
  */
 #include "rt_bsphere.h"
 #include "rt_kinds.h"
 
-rt_status rt_sphere_prepare(rt_object *o)
+static inline rt_status sphere_prepare(rt_object *o)
 {
     if (o->r <= 0)
         return RT_ERR_DEGENERATE;
@@ -20,7 +23,7 @@ rt_status rt_sphere_prepare(rt_object *o)
     return RT_OK;
 }
 
-int rt_sphere_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
+static inline int sphere_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                   fx_t *t, uint16_t *part)
 {
     int64_t tca, h[3];
@@ -41,7 +44,7 @@ int rt_sphere_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
     return 1;
 }
 
-fx_dir3 rt_sphere_normal(const rt_object *o, fx_vec3 p)
+static inline fx_dir3 sphere_normal(const rt_object *o, fx_vec3 p)
 {
     /* (p - a) / r as (p - a) rinv 2^-sh, then one Newton step (|p - a| is
      * r to within the rounding of p, a relative 2^-16 / r; fx_d3_renorm

@@ -6,6 +6,9 @@
  * in a frame centred on that sphere and scaled by a power of two, so its
  * coefficients are near 1 whatever the object's size or distance, and the
  * caps as planes. Their normals are rt_upright_normal.c's.
+ *
+ * Part of the dispatch unit: rt_shape.c includes this file (its comment
+ * says why); compiled alone it defines nothing.
  */
 #include "rt_bsphere.h"
 #include "rt_kinds.h"
@@ -49,7 +52,7 @@ static rt_status upright_bounds(rt_object *o)
  * which is convex, and one leaving a cap's outside leaves the half-space
  * that holds the whole shape; neither can meet the cylinder again. A cone
  * likewise, as one nappe's solid is convex. */
-rt_status rt_upright_prepare(rt_object *o)
+static inline rt_status upright_prepare(rt_object *o)
 {
     o->convex = 1;
     if (o->kind == RT_CYLINDER)
@@ -204,7 +207,7 @@ RT_ALWAYS_INLINE static inline int quadratic(int64_t a, int64_t b,
     return 2;
 }
 
-/* A cylinder's or cone's frame for one ray (rt_upright_hit): the frame is
+/* A cylinder's or cone's frame for one ray (upright_hit): the frame is
  * centred on the bounding sphere and scaled by 2^-ushift, with
  * RT_FRAME_BITS fraction bits; a frame value is a world raw value times
  * 2^sf. */
@@ -344,7 +347,7 @@ static int thin_side(const rt_object *o, const rt_ray *r, int64_t tca,
     const int32_t qz = (int32_t)shift_round_cold(z46, n);
     const int64_t qw = shift_round_cold(w46, n);
     const int64_t qy = shift_round_cold(y46, n); /* height below the apex */
-    /* The cone's coefficients there, as in rt_upright_hit; a is the same at
+    /* The cone's coefficients there, as in upright_hit; a is the same at
      * any scale. */
     const int32_t kdy = (int32_t)frame_round(fx_imul64(o->k, d[1]));
     const int64_t a = frame_round(fx_imul64(d[0], d[0]) +
@@ -428,10 +431,10 @@ RT_ALWAYS_INLINE static inline int upright_caps(const rt_object *o,
     return found;
 }
 
-/* rt_upright_hit's answer again for a cone whose side had a root s0 where
+/* upright_hit's answer again for a cone whose side had a root s0 where
  * the cone is thin: the side's hit is thin_side's, and the caps are
  * tested again against it; or, if thin_side declines, the answer found
- * (with *t and *part) stands. f is rt_upright_hit's frame for the ray. */
+ * (with *t and *part) stands. f is upright_hit's frame for the ray. */
 RT_COLD static int upright_thin(const rt_object *o, const rt_ray *r,
                                 int64_t tca, const upright_frame *f,
                                 int64_t s0, fx_t tmin, fx_t tmax, int found,
@@ -507,7 +510,7 @@ RT_ALWAYS_INLINE static inline int side_roots(const rt_object *o,
 }
 
 /* Cylinder (kind RT_CYLINDER) or cone, in the object's frame. */
-int rt_upright_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
+static inline int upright_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                    fx_t *t, uint16_t *part)
 {
     int64_t tca, h[3];
