@@ -50,6 +50,37 @@ static inline int64_t mul_q(int64_t q, int32_t p)
     return q * p;
 }
 
+/* bsphere's closest approach t and h = c - (o + t d) with |h|^2 in *h2,
+ * for a sphere or ray beyond the 32-bit range: 0 when the ray surely
+ * misses it or meets it only outside (tmin, tmax). */
+static inline int bsphere_wide(const fx_vec3 *cp, fx_t r, const rt_ray *ray,
+                               fx_t tmin, fx_t tmax, int64_t *tp,
+                               int64_t h[3], uint64_t *h2)
+{
+    const fx_vec3 c = *cp;
+    const int64_t ox = (int64_t)c.x - ray->o.x;
+    const int64_t oy = (int64_t)c.y - ray->o.y;
+    const int64_t oz = (int64_t)c.z - ray->o.z;
+    /* Each |oc| component is below 2^32 and |d| is 1: every partial sum
+     * is below |oc| 2^FX_UBITS < 2^63. */
+    const int64_t q = ox * ray->d.x + oy * ray->d.y + oz * ray->d.z;
+    int64_t t = (q + UHALF) >> FX_UBITS;
+    t -= (t * ray->e + ((int64_t)1 << 31)) >> 32;
+    if (t + r <= tmin || t - r >= tmax)
+        return 0; /* wholly behind the origin or beyond tmax */
+    h[0] = ox - ((t * ray->d.x + UHALF) >> FX_UBITS);
+    h[1] = oy - ((t * ray->d.y + UHALF) >> FX_UBITS);
+    h[2] = oz - ((t * ray->d.z + UHALF) >> FX_UBITS);
+    const int64_t rs = (int64_t)r + 1;
+    if (h[0] > rs || h[0] < -rs || h[1] > rs || h[1] < -rs || h[2] > rs ||
+        h[2] < -rs)
+        return 0;
+    *h2 = (uint64_t)(h[0] * h[0]) + (uint64_t)(h[1] * h[1]) +
+          (uint64_t)(h[2] * h[2]);
+    *tp = t;
+    return 1;
+}
+
 /* Closest approach of the ray to the bounding sphere (c, r). Returns 0 when
  * the ray misses it or meets it only outside (tmin, tmax); else *tca
  * (Q16.16, may exceed the fx_t range), *disc = r^2 - |h|^2 (Q32.32, the
@@ -67,8 +98,8 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
     int64_t t;
     uint64_t h2;
     if (small && ray->small) {
-        /* The common case, in 32-bit operands (smull/smlal on a Cortex-M3):
-         * the same values as the general path below. */
+        /* The common case, in 32-bit operands: the same values as the
+         * general path below. */
         int32_t ox = c.x - ray->o.x, oy = c.y - ray->o.y, oz = c.z - ray->o.z;
         int64_t q = fx_dot3_small(ox, oy, oz, ray->d.x, ray->d.y, ray->d.z);
         /* |t| <= |oc| < sqrt(3) 2^30, so t fits; t +- r may not. */
@@ -104,30 +135,11 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
         h[0] = hx;
         h[1] = hy;
         h[2] = hz;
-        /* 32-bit squares: one multiply each on a Cortex-M3, three
-         * 16-bit ones inline on an M0 (fx_len2_raw). */
+        /* Squares of 32-bit values (fx_len2_raw). */
         h2 = fx_len2_raw(hx, hy, hz);
         t = t32;
-    } else {
-        int64_t ox = (int64_t)c.x - ray->o.x;
-        int64_t oy = (int64_t)c.y - ray->o.y;
-        int64_t oz = (int64_t)c.z - ray->o.z;
-        /* Each |oc| component is below 2^32 and |d| is 1: every partial
-         * sum is below |oc| 2^FX_UBITS < 2^63. */
-        int64_t q = ox * ray->d.x + oy * ray->d.y + oz * ray->d.z;
-        t = (q + UHALF) >> FX_UBITS;
-        t -= (t * ray->e + ((int64_t)1 << 31)) >> 32;
-        if (t + r <= tmin || t - r >= tmax)
-            return 0; /* wholly behind the origin or beyond tmax */
-        h[0] = ox - ((t * ray->d.x + UHALF) >> FX_UBITS);
-        h[1] = oy - ((t * ray->d.y + UHALF) >> FX_UBITS);
-        h[2] = oz - ((t * ray->d.z + UHALF) >> FX_UBITS);
-        const int64_t rs = (int64_t)r + 1;
-        if (h[0] > rs || h[0] < -rs || h[1] > rs || h[1] < -rs ||
-            h[2] > rs || h[2] < -rs)
-            return 0;
-        h2 = (uint64_t)(h[0] * h[0]) + (uint64_t)(h[1] * h[1]) +
-             (uint64_t)(h[2] * h[2]);
+    } else if (!bsphere_wide(&c, r, ray, tmin, tmax, &t, h, &h2)) {
+        return 0;
     }
     uint64_t r2 = (uint64_t)(fx_imul64(r, r));
     /* |h|^2 is off by at most about 2 |h| + 1 (Q32.32): a ray that close

@@ -10,9 +10,8 @@
  * here, their functions static: one unit, so that the compiler inlines
  * each hit test into rt_intersect's switch, as it would in one file. A
  * call from the switch into a test in another unit, or the switch inlined
- * into the searches, costs the searches more than the whole issue's
- * budget on the Cortex-M3 (CHANGELOG.md). Each of those files compiled
- * alone defines nothing.
+ * into the searches, makes every object test dearer (the figures are in
+ * CHANGELOG.md). Each of those files compiled alone defines nothing.
  */
 #include "rt_shape.h"
 #include "rt_mesh.h"

@@ -473,10 +473,9 @@ RT_COLD static int upright_thin(const rt_object *o, const rt_ray *r,
  * cone's side the ray is clearly steeper than (not within rounding of a
  * generator's direction, where one root is far and saturates), whose one
  * root is then the lower nappe's. */
-RT_ALWAYS_INLINE static inline int side_roots(const rt_object *o,
-                                              const upright_frame *f,
-                                              int32_t ur, int cone,
-                                              int *steep, int64_t root[2])
+static inline int side_roots(const rt_object *o, const upright_frame *f,
+                             int32_t ur, int cone, int *steep,
+                             int64_t root[2])
 {
     const int32_t px = f->p[0], py = f->p[1], pz = f->p[2];
     const int32_t dx = f->d[0], dy = f->d[1], dz = f->d[2];
