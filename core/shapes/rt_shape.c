@@ -9,9 +9,10 @@
  * The sphere's, quad's, box's and upright shapes' files are included
  * here, their functions static: one unit, so that the compiler inlines
  * each hit test into rt_intersect's switch, as it would in one file. A
- * call from the switch into a test in another unit, or the switch inlined
- * into the searches, makes every object test dearer (the figures are in
- * CHANGELOG.md). Each of those files compiled alone defines nothing.
+ * call from the switch into a test in another unit (a second call, its
+ * six arguments passed again) or the switch inlined into each search (each
+ * search's loop grows) makes every object test dearer. Each of
+ * those files compiled alone defines nothing.
  */
 #include "rt_shape.h"
 #include "rt_mesh.h"
