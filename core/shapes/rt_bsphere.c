@@ -9,8 +9,8 @@
 #include "rt_bsphere.h"
 #include "rt_kinds.h"
 
-int rt_bsphere_fine(const fx_vec3 *c, int64_t t, const rt_ray *ray, fx_t r,
-                    uint64_t *disc)
+uint64_t rt_bsphere_fine(const fx_vec3 *c, int64_t t, const rt_ray *ray,
+                         fx_t r)
 {
     const int64_t ox = (int64_t)c->x - ray->o.x;
     const int64_t oy = (int64_t)c->y - ray->o.y;
@@ -29,9 +29,8 @@ int rt_bsphere_fine(const fx_vec3 *c, int64_t t, const rt_ray *ray, fx_t r,
     const uint64_t re = (uint64_t)r << e;
     const uint64_t r2 = re * re;
     if (h2 > r2)
-        return 0;
-    *disc = (r2 - h2) >> (2 * e);
-    return 1;
+        return RT_BSPHERE_MISS;
+    return (r2 - h2) >> (2 * e);
 }
 
 int64_t rt_plane_t(int64_t p, fx_t o, int32_t d)

@@ -18,11 +18,13 @@
  * 1e-5 units. There h is formed again with e more fraction bits, as many
  * as keep r 2^e within 30 bits (at most those the unit vector has):
  * oc - t d with the rounded t, whose error is along d and so changes
- * |h|^2 only by its square. Returns 0 for a miss, else 1 with the squared
- * half chord r^2 - |h|^2 as Q32.32 in *disc. Rare, and out of line
- * (rt_bsphere.c). */
-int rt_bsphere_fine(const fx_vec3 *c, int64_t t, const rt_ray *ray, fx_t r,
-                    uint64_t *disc);
+ * |h|^2 only by its square. Returns the squared half chord r^2 - |h|^2
+ * as Q32.32 (below 2^58), or RT_BSPHERE_MISS for a miss. Rare, and out
+ * of line (rt_bsphere.c); a value, not a pointer to the caller's, so that
+ * no local of the caller escapes and its own last call can be a jump. */
+#define RT_BSPHERE_MISS UINT64_MAX
+uint64_t rt_bsphere_fine(const fx_vec3 *c, int64_t t, const rt_ray *ray,
+                         fx_t r);
 
 /* Accepts t if tmin < t < tmax and nearer than the best so far. */
 static inline int take(int64_t t, fx_t tmin, fx_t *best)
@@ -147,8 +149,10 @@ RT_ALWAYS_INLINE static inline int bsphere(const fx_vec3 *cp, fx_t r, int small,
     const uint64_t margin = 2 * (uint64_t)r + 8;
     if (FX_USHIFT > 0 && r < ((fx_t)1 << 29) &&
         (h2 > r2 ? h2 - r2 : r2 - h2) <= margin) {
-        if (!rt_bsphere_fine(cp, t, ray, r, disc))
+        const uint64_t d = rt_bsphere_fine(cp, t, ray, r);
+        if (d == RT_BSPHERE_MISS)
             return 0;
+        *disc = d;
     } else {
         if (h2 > r2)
             return 0;

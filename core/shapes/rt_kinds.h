@@ -38,10 +38,6 @@ fx_dir3 rt_upright_normal(const rt_object *o, const rt_ray *r, fx_t t,
  * where the steps decline (a ray within rounding of tangent). */
 int rt_side_root(const rt_object *o, const rt_ray *r, fx_t t, int64_t *t30);
 
-/* A mesh's bounding sphere, then its hierarchy (rt_mesh_hit). */
-int rt_mesh_hit_bounded(const rt_object *o, const rt_ray *r, fx_t tmin,
-                        fx_t tmax, fx_t *t, uint16_t *part);
-
 /* Distance along the unit component d (d != 0) from coordinate o to the
  * plane at coordinate p, (p - o) / d rounded to nearest: a flat quad's
  * distance, so that box faces and caps lying in such a quad's plane tie

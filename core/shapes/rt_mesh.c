@@ -17,8 +17,6 @@
  * edge) are exact 64-bit products of those integers: their signs, which
  * decide the hit, are exact too.
  */
-#include "rt_bsphere.h"
-#include "rt_kinds.h"
 #include "rt_mesh.h"
 
 /* Half of a unit vector's last bit. */
@@ -493,18 +491,4 @@ int rt_mesh_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
             }
         }
     }
-}
-
-/* The bounding sphere first when ray and mesh are near the origin (its
- * margin covers the triangle test's rounding there, rt_mesh_check.c),
- * then the hierarchy; part is the triangle. */
-int rt_mesh_hit_bounded(const rt_object *o, const rt_ray *r, fx_t tmin,
-                        fx_t tmax, fx_t *t, uint16_t *part)
-{
-    int64_t tca, h[3];
-    uint64_t disc;
-    if (o->small && r->small &&
-        !bsphere(&o->bc, o->br, 1, r, tmin, tmax, &tca, &disc, h))
-        return 0;
-    return rt_mesh_hit(o, r, tmin, tmax, t, part);
 }

@@ -22,6 +22,21 @@
 #include "rt_box.c"
 #include "rt_upright.c"
 
+/* A mesh: its bounding sphere when ray and mesh are near the origin (its
+ * margin covers the triangle test's rounding there, rt_mesh_check.c),
+ * then its hierarchy (rt_mesh.c); part is the triangle. */
+RT_NOINLINE static int mesh_hit(const rt_object *o, const rt_ray *r,
+                                fx_t tmin, fx_t tmax, fx_t *t,
+                                uint16_t *part)
+{
+    int64_t tca, h[3];
+    uint64_t disc;
+    if (o->small && r->small &&
+        !bsphere(&o->bc, o->br, 1, r, tmin, tmax, &tca, &disc, h))
+        return 0;
+    return rt_mesh_hit(o, r, tmin, tmax, t, part);
+}
+
 rt_status rt_object_prepare(rt_object *o)
 {
     rt_status st;
@@ -76,7 +91,7 @@ int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
     case RT_MESH:
         if (!RT_HAS_MESH)
             break;
-        return rt_mesh_hit_bounded(o, r, tmin, tmax, t, part);
+        return mesh_hit(o, r, tmin, tmax, t, part);
     default:
         break;
     }
