@@ -279,7 +279,7 @@ static rt_status check_shape(rt_lex *p, const rt_lex_token *kw,
         if (o->kind != RT_SPHERE && o->h <= 0)
             return degenerate(p, &at[key_of(sp, F_H)], nm,
                               "height must be > 0");
-        /* rt_scene.c's RT_MAX_CONE_SLOPE, as docs/numerics.md states. */
+        /* rt_upright.c's RT_MAX_CONE_SLOPE, as docs/numerics.md states. */
         if (o->kind == RT_CONE && fx_div(o->r, o->h) > FX_INT(64))
             return degenerate(p, &at[key_of(sp, F_R)], nm,
                               "radius / height must be at most 64");

@@ -100,7 +100,7 @@ typedef enum {
 #define RT_CAP_TOP 2u
 
 /* Fraction bits of the frame cylinders and cones are solved in
- * (rt_intersect.c), and of a cone's slope rt_object.k. */
+ * (core/shapes/rt_upright.c), and of a cone's slope rt_object.k. */
 #define RT_FRAME_BITS 24
 
 typedef struct {
@@ -174,7 +174,8 @@ typedef struct {
  * fov 60, black background, white ambient, 320x240, 1 spp, depth 5. */
 void rt_scene_init(rt_scene *s);
 
-/* Derives an object's constants and checks its shape. Returns RT_OK, or
+/* Derives an object's constants and checks its shape (each shape's file in
+ * core/shapes, through core/shapes/rt_shape.c). Returns RT_OK, or
  * RT_ERR_DEGENERATE for a zero radius, height, edge or extent, or for
  * parallel quad edges, or RT_ERR_ARG for a mesh without one (rt_mesh.h
  * states what a mesh must hold). */

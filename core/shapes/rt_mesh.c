@@ -364,6 +364,54 @@ static inline int node_hit(const box_frame *bf, const rt_mesh_node *nd,
                     : box_hit(&bf->u.br, nd, tmin, tmax, tn);
 }
 
+/* The node boxes' frame for ray r and shift s: 32-bit offsets for a near
+ * mesh (s = 0), else 64-bit ones shifted like the vertices. */
+static inline void box_frame_set(box_frame *bf, const rt_mesh *m,
+                                 const rt_ray *r, int s)
+{
+    bf->near = s == 0;
+    if (bf->near) {
+        near_box_set(&bf->u.nb, m, r);
+        return;
+    }
+    const int32_t dd[3] = { r->d.x, r->d.y, r->d.z };
+    bf->u.br.base[0] = (int64_t)m->lo.x - r->o.x;
+    bf->u.br.base[1] = (int64_t)m->lo.y - r->o.y;
+    bf->u.br.base[2] = (int64_t)m->lo.z - r->o.z;
+    bf->u.br.qshift = m->qshift;
+    bf->u.br.s = s;
+    for (int i = 0; i < 3; i++) {
+        bf->u.br.d[i] = dd[i];
+        if (dd[i] != 0)
+            bf->u.br.inv[i] = recip_of(dd[i]);
+    }
+}
+
+/* The triangles of leaf nd nearer than *best: 1 with *best and *tri set
+ * for a hit. */
+static inline int leaf_hit(const rt_mesh *m, const rt_mesh_node *nd,
+                           const shear *sh, int near, fx_t tmin, fx_t *best,
+                           uint16_t *tri)
+{
+    const uint16_t *ix = &m->tri[3u * nd->a];
+    int found = 0;
+    for (unsigned k = 0; k < nd->n; k++, ix += 3) {
+        fx_t tk;
+        const proj pa = near ? project_near(sh, m->v[ix[0]])
+                             : project(sh, m->v[ix[0]]);
+        const proj pb = near ? project_near(sh, m->v[ix[1]])
+                             : project(sh, m->v[ix[1]]);
+        const proj pc = near ? project_near(sh, m->v[ix[2]])
+                             : project(sh, m->v[ix[2]]);
+        if (tri_core(sh, pa, pb, pc, tmin, *best, &tk)) {
+            *best = tk;
+            *tri = (uint16_t)(nd->a + k);
+            found = 1;
+        }
+    }
+    return found;
+}
+
 int rt_mesh_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                 fx_t *t, uint16_t *tri)
 {
@@ -380,25 +428,8 @@ int rt_mesh_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
     shear sh;
     shear_set(&sh, r, shift_for(bound));
     const int s = sh.s;
-    /* The node boxes: 32-bit offsets for a near mesh, else 64-bit ones
-     * shifted like the vertices. */
     box_frame bf;
-    bf.near = s == 0;
-    if (bf.near) {
-        near_box_set(&bf.u.nb, m, r);
-    } else {
-        const int32_t dd[3] = { r->d.x, r->d.y, r->d.z };
-        bf.u.br.base[0] = (int64_t)m->lo.x - r->o.x;
-        bf.u.br.base[1] = (int64_t)m->lo.y - r->o.y;
-        bf.u.br.base[2] = (int64_t)m->lo.z - r->o.z;
-        bf.u.br.qshift = m->qshift;
-        bf.u.br.s = s;
-        for (int i = 0; i < 3; i++) {
-            bf.u.br.d[i] = dd[i];
-            if (dd[i] != 0)
-                bf.u.br.inv[i] = recip_of(dd[i]);
-        }
-    }
+    box_frame_set(&bf, m, r, s);
     /* Distances in the shifted frame, rounded outwards (and one below
      * FX_MAX, so that best_s + 1 is one too). */
     const int32_t tmin_s = tmin >> s;
@@ -415,21 +446,7 @@ int rt_mesh_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
     for (;;) {
         const rt_mesh_node *nd = &m->node[ni];
         if (nd->n) {
-            const uint16_t *ix = &m->tri[3u * nd->a];
-            for (unsigned k = 0; k < nd->n; k++, ix += 3) {
-                fx_t tk;
-                const proj pa = bf.near ? project_near(&sh, m->v[ix[0]])
-                                        : project(&sh, m->v[ix[0]]);
-                const proj pb = bf.near ? project_near(&sh, m->v[ix[1]])
-                                        : project(&sh, m->v[ix[1]]);
-                const proj pc = bf.near ? project_near(&sh, m->v[ix[2]])
-                                        : project(&sh, m->v[ix[2]]);
-                if (tri_core(&sh, pa, pb, pc, tmin, best, &tk)) {
-                    best = tk;
-                    *tri = (uint16_t)(nd->a + k);
-                    found = 1;
-                }
-            }
+            found |= leaf_hit(m, nd, &sh, bf.near, tmin, &best, tri);
             best_s = up_shift(best, s);
         } else {
             unsigned l = ni + 1, rr = nd->a;

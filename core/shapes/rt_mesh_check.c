@@ -15,7 +15,7 @@
 
 /* The bounding sphere's margin (raw) beyond the farthest vertex or box
  * corner: the rounding of its own test, and of the triangle test's
- * projection for a ray within 8192 units (rt_intersect.c tests the sphere
+ * projection for a ray within 8192 units (rt_shape.c tests the sphere
  * only then). */
 #define MESH_MARGIN 32
 

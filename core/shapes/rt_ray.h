@@ -68,7 +68,7 @@ static inline fx_t rt_origin_offset(const rt_object *o)
 /* One component of a + s c for s = +-2^k (sign neg), k <= 17, and a unit
  * component c, rounded as fx_madd_u: s c 2^-FX_UBITS + 1/2 rounded down
  * is (+-c + 2^(U-1-k)) >> (U - k) exactly (U = FX_UBITS), or +-c 2^(k-U)
- * for k >= U: a shift instead of a 64-bit product (a call on the M0). */
+ * for k >= U: a shift instead of a 64-bit product. */
 static inline fx_t rt_madd_pow2(fx_t a, int32_t c, unsigned k, int neg)
 {
     const int32_t v = neg ? -c : c; /* exact: |c| <= 2^FX_UBITS */

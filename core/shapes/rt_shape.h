@@ -1,50 +1,34 @@
 /* SPDX-License-Identifier: MIT */
-/* rt_shape: ray-shape intersection and surface normals. Internal. */
+/* rt_shape: ray-shape intersection and surface normals, for every kind
+ * through one dispatch (rt_shape.c; each kind's file is listed in
+ * rt_kinds.h). Internal to the core. */
 #ifndef RT_SHAPE_H
 #define RT_SHAPE_H
 
-#include "rt_ray.h"
+#include "rt_kinds.h"
 
 /* Ray-object intersection: the nearest t with tmin < t < tmax. Returns 1
  * and sets *t and *part (which face, cap or side; a mesh's triangle) on a
- * hit, else 0. A kind
- * this build removed (RT_NO_SPHERE, ...) never hits. */
+ * hit, else 0. A kind this build removed (RT_NO_SPHERE, ...) never
+ * hits. */
 int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                  fx_t *t, uint16_t *part);
 
 /* 1 if c = a p - b q (a component of oc x d: oc = c - o for a small
  * sphere (c, r) and ray, so |a|, |b| < 2^30, and unit components p and
- * q) is beyond +-(r + 4) 2^FX_UBITS. |oc x d| is |d| (within 2^-28 of
- * 1) times the centre's distance from the ray's line, so that distance
- * is then over r + 1 ulps, and bsphere's own tests (h within an ulp of
- * it) miss too: the same answers, without the closest approach. c is
- * taken as c 2^-32 against +-k, k 2^32 >= (r + 5) 2^30 (r < 2^29): a
- * 32-bit compare; the ulps this gives away do not matter. */
+ * q) is surely beyond +-(r + 4) 2^FX_UBITS. |oc x d| is |d| (within
+ * 2^-28 of 1) times the centre's distance from the ray's line, so that
+ * distance is then over r + 1 ulps, and bsphere's own tests (h within an
+ * ulp of it) miss too: the same answers, without the closest approach.
+ * fx_cross_hi gives c 2^-32 to within 2, taken against +-(k + 2), k
+ * 2^32 >= (r + 5) 2^30 (r < 2^29): the ulps this gives away do not
+ * matter. */
 static inline int rt_miss_cross(int32_t a, int32_t p, int32_t b, int32_t q,
-                             fx_t r)
+                                fx_t r)
 {
-    const int32_t k = (int32_t)((uint32_t)r >> 2) + 2;
-    if (FX_SOFT_MUL64) {
-        /* From 16-bit halves (x = h 2^16 + l): c 2^-32 is within 2 of
-         * ch, as the low products and the middle ones' dropped bits
-         * are each below one unit. (|h| <= 2^14, l < 2^16: each middle
-         * sum below 2^31.) */
-        const int32_t ah = a >> 16, bh = b >> 16, ph = p >> 16;
-        const int32_t qh = q >> 16;
-        const int32_t al = (int32_t)((uint32_t)a & 0xFFFFu);
-        const int32_t bl = (int32_t)((uint32_t)b & 0xFFFFu);
-        const int32_t pl = (int32_t)((uint32_t)p & 0xFFFFu);
-        const int32_t ql = (int32_t)((uint32_t)q & 0xFFFFu);
-        const int32_t ch = ah * ph - bh * qh + ((ah * pl + al * ph) >> 16) -
-                           ((bh * ql + bl * qh) >> 16);
-        /* ch >= k + 2 or ch <= -k - 2, in one unsigned compare (#17:
-         * 20 instructions a pixel on the M0). */
-        const uint32_t k1 = (uint32_t)k + 1u;
-        return (uint32_t)ch + k1 > 2u * k1;
-    }
-    const int32_t ch =
-        (int32_t)((fx_imul64(a, p) + fx_imul64(b, -q)) >> 32);
-    return (uint32_t)ch + (uint32_t)k > 2 * (uint32_t)k - 1u;
+    const uint32_t k1 = ((uint32_t)r >> 2) + 3u; /* k + 1 */
+    /* ch >= k + 2 or ch <= -k - 2, in one unsigned compare. */
+    return (uint32_t)fx_cross_hi(a, p, b, q) + k1 > 2u * k1;
 }
 
 /* rt_miss_cross for |a|, |b| < 2^23 and r < 2^22, from one 32-bit
@@ -53,8 +37,7 @@ static inline int rt_miss_cross(int32_t a, int32_t p, int32_t b, int32_t q,
  * a p - A P 2^24 = A p0 2^8 + a0 P 2^16 + a0 p0 is below (|A| + |P| +
  * 1) 2^24 <= (2^15 + 2^14 + 2) 2^24, so |c - C 2^24| < 98308 2^24, and
  * |C| >= k = (floor(r / 32) + 50) 2^11 > 64 r + 98563 makes |c| > (r +
- * 4) 2^30 as there. |C| <= 2^30 + 2^16: no overflow. For the M0 (#17:
- * 34 -> 12 instructions a test). */
+ * 4) 2^30 as there. |C| <= 2^30 + 2^16: no overflow. */
 static inline int rt_miss_cross_near(int32_t a, int32_t p, int32_t b,
                                      int32_t q, fx_t r)
 {
@@ -68,16 +51,16 @@ static inline int rt_miss_cross_near(int32_t a, int32_t p, int32_t b,
  * tested against its bounding sphere (bc, br; for a mesh when both are
  * small), so a ray passing it by misses. near: o is small and its bc
  * and br and r's origin are within 2^22 (64 units; rt_dir_grids.near),
- * for rt_miss_cross_near on the M0. */
+ * so the 32-bit products of rt_miss_cross_near apply. */
 static inline int rt_passes_by(const rt_object *o, const rt_ray *r,
                                int near)
 {
     if (o->kind == RT_QUAD)
         return 0;
-    /* The y and x components of oc x d: of the seed's tests, the
-     * first rejects 58 %, all three 78 %; the z one costs more than
-     * it saves. near implies both small. */
-    if (FX_SOFT_MUL64 && near) {
+    /* The y and x components of oc x d: of the seed's tests, the first
+     * rejects most, the two together more than three quarters; the z
+     * one costs more than it saves. near implies both small. */
+    if (near) {
         const int32_t oz = o->bc.z - r->o.z;
         return rt_miss_cross_near(oz, r->d.x, o->bc.x - r->o.x, r->d.z,
                                   o->br) ||
@@ -97,14 +80,9 @@ static inline int rt_passes_by(const rt_object *o, const rt_ray *r,
  * casts reflected or refracted rays, whose directions inherit the
  * normal's error), on a cylinder's side *p becomes the point of the side
  * where the ray meets it, rounded, and the normal is taken there: the
- * rounding of t and of p moves o + t d off the side (rt_normal.c). */
+ * rounding of t and of p moves o + t d off the side
+ * (rt_upright_normal.c). */
 fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *p,
                   uint16_t part, int precise);
-
-/* Where ray r meets the side of cylinder or cone o near its side root t,
- * from Newton steps at the unrounded o + t d (as rt_normal's for a
- * reflective side): 1 with *t30, the distance with 30 fraction bits; 0
- * where the steps decline (a ray within rounding of tangent). */
-int rt_side_root(const rt_object *o, const rt_ray *r, fx_t t, int64_t *t30);
 
 #endif /* RT_SHAPE_H */

@@ -444,7 +444,7 @@ static int aim_apex(const rt_object *o, double dx, double dy, double dz,
  * within 2^-14. The apex is a double root of the cone's quadratic, whose
  * rounding moved such a hit by up to 2% of this cone's height along the
  * ray; a ray passing that near is solved again about the apex in a finer
- * frame (rt_intersect.c, thin_side). Straight down the axis the normal
+ * frame (rt_upright.c, thin_side). Straight down the axis the normal
  * there is (0, 1, 0). */
 void case_cone_apex_and_rim(void)
 {

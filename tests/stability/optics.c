@@ -112,7 +112,7 @@ void case_light_at_cone_apex(void)
  * there, the first fine frame's rounding split the roots up to a few EPS
  * apart, and the ray was blocked (random scene 2457: a dark spot in the
  * light on a quad 2,466 units away; here 24 of 1,152 rays); the side is
- * now solved once more about that root (rt_upright.h, upright_thin). */
+ * now solved once more about that root (rt_upright.c, upright_thin). */
 #define PI_D 3.14159265358979323846
 
 void case_apex_light_along_generator(void)
@@ -242,7 +242,7 @@ void case_light_on_flat_cone_rim(void)
  * for 400 units, and the rounded hit point, 16 ulps off along the camera
  * ray, sent one pixel's bounce elsewhere (core 26 18 28, reference 64 94
  * 36). Cone sides that cast secondary rays now take their hit point and
- * normal from Newton steps onto the side (rt_normal.c): no speckles, and
+ * normal from Newton steps onto the side (rt_upright_normal.c): no speckles, and
  * at least 40 dB against the reference. */
 void case_bumped_mirror_under_flat_cone(void)
 {

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * rt_normal: outward unit normals at a ray's hit.
+ * rt_upright_normal: the outward unit normals of cylinders and cones.
  *
  * The hit point p = o + t d is rounded to Q16.16 and t itself to 2^-16;
  * either error, up to 2^-17 of a unit across the surface (more where the
@@ -11,8 +11,7 @@
  * fraction bits and moved along d by Newton steps onto the side, and the
  * normal and the hit point are taken there (docs/numerics.md).
  */
-#include "rt_mesh.h"
-#include "rt_shape.h"
+#include "rt_kinds.h"
 
 /* v 2^-n, rounded to nearest, for n > 0. */
 static int64_t shr_round(int64_t v, int n)
@@ -131,8 +130,7 @@ RT_ALWAYS_INLINE static inline int fine_move(const rt_ray *r, int64_t g,
  * p, with 30 fraction bits, and returns 1; returns 0 where the move
  * would pass 2^-8 (a ray within rounding of tangent) or the values leave
  * their ranges, and the caller then takes p. Run only for hits that cast
- * secondary rays: compiled for size (RT_COLD), as cone_step (#17: 216
- * bytes less flash on the an385). */
+ * secondary rays: compiled for size (RT_COLD), as cone_step. */
 RT_COLD static int side_step(const rt_ray *r, fx_t t, fx_vec3 p, fx_vec3 a,
                              fx_t rad, int32_t q[3], int64_t *moved_t)
 {
@@ -157,23 +155,16 @@ RT_COLD static int side_step(const rt_ray *r, fx_t t, fx_vec3 p, fx_vec3 a,
 #define FINE_K_BITS 24
 static int64_t div_frac(int64_t n, int32_t h, int64_t *lo)
 {
-    if (FX_SOFT_MUL64) {
-        /* Without a divide instruction the signed 64-bit library divide
-         * is a long call and links two more: the same truncated quotient
-         * and remainder from |n| by fx_udiv64, and the fraction, below
-         * 2^FINE_K_BITS, by fx_udiv64_32 (#17: many 80x60 on the M0
-         * 10,205.8 -> 10,146.2 instructions a pixel, m0 text -592). */
-        const uint64_t un = n < 0 ? 0u - (uint64_t)n : (uint64_t)n;
-        const uint64_t uq = fx_udiv64(un, (uint32_t)h);
-        const uint32_t ur = (uint32_t)(un - uq * (uint32_t)h); /* < h */
-        const int64_t f = (int64_t)fx_udiv64_32((uint64_t)ur << FINE_K_BITS,
-                                                (uint32_t)h);
-        *lo = n < 0 ? -f : f;
-        return n < 0 ? -(int64_t)uq : (int64_t)uq;
-    }
-    const int64_t q = n / h;
-    *lo = (n - q * h) * ((int64_t)1 << FINE_K_BITS) / h;
-    return q;
+    /* The truncated quotient and remainder from |n| by fx_udiv64, and the
+     * fraction, below 2^FINE_K_BITS, by fx_udiv64_32: no signed 64-bit
+     * library divide, which 32-bit cores would call. */
+    const uint64_t un = n < 0 ? 0u - (uint64_t)n : (uint64_t)n;
+    const uint64_t uq = fx_udiv64(un, (uint32_t)h);
+    const uint32_t ur = (uint32_t)(un - uq * (uint32_t)h); /* < h */
+    const int64_t f =
+        (int64_t)fx_udiv64_32((uint64_t)ur << FINE_K_BITS, (uint32_t)h);
+    *lo = n < 0 ? -f : f;
+    return n < 0 ? -(int64_t)uq : (int64_t)uq;
 }
 
 /* The same for the side of a cone (axis through a, apex at height ya =
@@ -286,95 +277,28 @@ int rt_side_root(const rt_object *o, const rt_ray *r, fx_t t, int64_t *t30)
     return 1;
 }
 
-/* A sphere's normal component v rinv 2^-sh, rounded to nearest, for sh
- * in 2..32: the 32-bit result from the product's two words, as two
- * 32-bit shifts, not a 64-bit one (#17: 19 fewer instructions a call
- * on the M3, 44 fewer on the M0). */
-static inline int32_t unit_c(int32_t v, uint32_t rinv, int sh)
+fx_dir3 rt_upright_normal(const rt_object *o, const rt_ray *r, fx_t t,
+                          fx_vec3 *pp, unsigned part, int precise)
 {
-    if (FX_SOFT_MUL64 && sh > 16) {
-        /* The M0, for r >= 2^-1: the product's columns as
-         * fx_iumul64_soft sums them, and from them the result at once,
-         * in 32-bit values: 2^(sh - 1) is a multiple of 2^16, so the
-         * product's low 16 bits do not reach it, and with s = sh - 16
-         * the result is hi 2^(16 - s) + (the next 16 bits + 2^(s - 1))
-         * 2^-s (#17: 24 fewer instructions a sphere's normal). */
-        const int s = sh - 16;
-        const int32_t ah = v >> 16;
-        const uint32_t al = (uint32_t)v & 0xFFFFu, bh = rinv >> 16;
-        const uint32_t bl = rinv & 0xFFFFu, ll = al * bl;
-        const int32_t t = ah * (int32_t)bl + (int32_t)(ll >> 16);
-        const uint32_t u = al * bh + ((uint32_t)t & 0xFFFFu);
-        const uint32_t hi =
-            (uint32_t)(ah * (int32_t)bh + (t >> 16)) + (u >> 16);
-        const uint32_t w = (u & 0xFFFFu) + ((uint32_t)1 << (s - 1));
-        return (int32_t)((hi << (16 - s)) + (w >> s));
+    if (part == 1)
+        return fx_d3(0, -FX_UONE, 0);
+    if (part == 2)
+        return fx_d3(0, FX_UONE, 0);
+    if (precise) {
+        const fx_dir3 n = fine_normal(o, r, t, pp);
+        if (n.x != 0 || n.y != 0 || n.z != 0)
+            return n;
     }
-    const uint64_t u =
-        (uint64_t)fx_iumul64(v, rinv) + ((uint32_t)1 << (sh - 1));
-    return (int32_t)(((uint32_t)u >> (sh - 1) >> 1) |
-                     ((uint32_t)(u >> 32) << (32 - sh)));
-}
-
-fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *pp,
-                  uint16_t part, int precise)
-{
     const fx_vec3 p = *pp;
-    switch (o->kind) {
-    case RT_SPHERE: {
-        /* (p - a) / r, then one Newton step (|p - a| is r to within the
-         * rounding of p, a relative 2^-16 / r; fx_d3_renorm normalises in
-         * full when that is more than 2^-15). */
-        const int sh = 33 - fx_clz32((uint32_t)o->r); /* b + 1 */
-        /* p is on the sphere to within its rounding: for a small one
-         * (a and r within 2^29) each p - a is within 2^30, and the
-         * saturating subtraction a plain one (#17: seed 2,588.4 ->
-         * 2,584.7 instructions a pixel on the M3, 6,942.7 -> 6,933.8 on
-         * the M0). */
-        const fx_vec3 v =
-            o->small ? fx_v3(p.x - o->a.x, p.y - o->a.y, p.z - o->a.z)
-                     : fx_v3_sub(p, o->a);
-        return fx_d3_renorm(fx_d3(unit_c(v.x, o->rinv, sh),
-                                  unit_c(v.y, o->rinv, sh),
-                                  unit_c(v.z, o->rinv, sh)));
+    fx_t x = fx_sub(p.x, o->a.x), z = fx_sub(p.z, o->a.z);
+    if (o->kind == RT_CONE) {
+        fx_t rho = (fx_t)fx_sqrt_q32((uint64_t)(fx_imul64(x, x)) +
+                                     (uint64_t)(fx_imul64(z, z)));
+        if (rho == 0)
+            return fx_d3(0, FX_UONE, 0); /* apex */
+        /* y = k rho, o->k with RT_FRAME_BITS fraction bits. */
+        return fx_d3_normalize64(
+            x, shr_round(fx_imul64(o->k, rho), RT_FRAME_BITS), z);
     }
-    case RT_QUAD:
-        return o->n;
-    case RT_MESH:
-        if (!RT_HAS_MESH)
-            return o->n; /* never hit in this build */
-        /* From *pp, not the copy p that the sphere's registers hold
-         * (#17: meshes scene 3.9 fewer instructions a pixel on the M0). */
-        return rt_mesh_normal(o, *pp, part);
-    case RT_BOX: {
-        /* part is the axis of the face; its side is the one p lies on. */
-        const fx_t pc[3] = { p.x, p.y, p.z };
-        const fx_t cc[3] = { o->bc.x, o->bc.y, o->bc.z };
-        int32_t v[3] = { 0, 0, 0 };
-        v[part] = pc[part] > cc[part] ? FX_UONE : -FX_UONE;
-        return fx_d3(v[0], v[1], v[2]);
-    }
-    default: {
-        if (part == 1)
-            return fx_d3(0, -FX_UONE, 0);
-        if (part == 2)
-            return fx_d3(0, FX_UONE, 0);
-        if (precise) {
-            const fx_dir3 n = fine_normal(o, r, t, pp);
-            if (n.x != 0 || n.y != 0 || n.z != 0)
-                return n;
-        }
-        fx_t x = fx_sub(p.x, o->a.x), z = fx_sub(p.z, o->a.z);
-        if (o->kind == RT_CONE) {
-            fx_t rho = (fx_t)fx_sqrt_q32((uint64_t)(fx_imul64(x, x)) +
-                                         (uint64_t)(fx_imul64(z, z)));
-            if (rho == 0)
-                return fx_d3(0, FX_UONE, 0); /* apex */
-            /* y = k rho, o->k with RT_FRAME_BITS fraction bits. */
-            return fx_d3_normalize64(
-                x, shr_round(fx_imul64(o->k, rho), RT_FRAME_BITS), z);
-        }
-        return fx_d3_normalize(fx_v3(x, 0, z));
-    }
-    }
+    return fx_d3_normalize(fx_v3(x, 0, z));
 }

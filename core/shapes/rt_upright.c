@@ -1,13 +1,80 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * rt_upright: cylinders and cones, solved in a frame of their own (see
- * docs/numerics.md). Static functions for rt_intersect.c alone, which
- * includes this after the bounding-sphere test (bsphere), plane_t and
- * take that they share with the other shapes: one unit, so the compiler
- * inlines them as it would in one file. Internal.
+ * rt_upright: cylinders and cones (base centre a, radius r, height h,
+ * standing along +y), solved in a frame of their own (see
+ * docs/numerics.md): after the bounding-sphere test, the side's quadratic
+ * in a frame centred on that sphere and scaled by a power of two, so its
+ * coefficients are near 1 whatever the object's size or distance, and the
+ * caps as planes. Their normals are rt_upright_normal.c's.
+ *
+ * Part of the dispatch unit: rt_shape.c includes this file (its comment
+ * says why); compiled alone it defines nothing.
  */
-#ifndef RT_UPRIGHT_H
-#define RT_UPRIGHT_H
+#include "rt_bsphere.h"
+#include "rt_kinds.h"
+
+/* Largest cone slope r / h: flatter cones lose the unit-frame precision
+ * (k^2 must stay well inside Q16.16). */
+#define RT_MAX_CONE_SLOPE FX_INT(64)
+
+/* Scales v by 2^-k, rounding to nearest; exact for k <= 0. */
+static fx_t scale_pow2(fx_t v, int k)
+{
+    if (k <= 0)
+        return fx_sat64((int64_t)v * ((int64_t)1 << -k));
+    return (fx_t)(((int64_t)v + ((int64_t)1 << (k - 1))) >> k);
+}
+
+/* Bounding sphere and unit frame for an upright shape of radius r and
+ * height h. */
+static rt_status upright_bounds(rt_object *o)
+{
+    fx_t hh = o->h / 2;
+    int k = 0;
+    if (o->r <= 0 || o->h <= 0)
+        return RT_ERR_DEGENERATE;
+    o->bc = fx_v3(o->a.x, fx_add(o->a.y, hh), o->a.z);
+    o->br = fx_add(fx_v3_length(fx_v3(o->r, hh, 0)), RT_BOUND_MARGIN);
+    while (k < 15 && ((int64_t)o->br >> k) > FX_ONE)
+        k++;
+    while (k <= 0 && k > -15 && ((int64_t)o->br << -k) <= FX_HALF)
+        k--;
+    o->ushift = (int8_t)k;
+    /* Radius and half height with 16 fraction bits in the frame: both
+     * must be nonzero (rt_parse_obj.c states the limit). */
+    if (scale_pow2(o->r, k) == 0 || scale_pow2(hh, k) == 0)
+        return RT_ERR_DEGENERATE;
+    return RT_OK;
+}
+
+/* Open or capped, a cylinder is convex for the rays leaving it: a ray
+ * leaving the outside of the side leaves the infinite solid cylinder,
+ * which is convex, and one leaving a cap's outside leaves the half-space
+ * that holds the whole shape; neither can meet the cylinder again. A cone
+ * likewise, as one nappe's solid is convex. */
+static inline rt_status upright_prepare(rt_object *o)
+{
+    o->convex = 1;
+    if (o->kind == RT_CYLINDER)
+        return upright_bounds(o);
+    o->caps &= RT_CAP_BOTTOM;
+    if (o->r <= 0 || o->h <= 0)
+        return RT_ERR_DEGENERATE;
+    const fx_t k16 = fx_div(o->r, o->h);
+    if (k16 > RT_MAX_CONE_SLOPE || k16 == 0)
+        return RT_ERR_DEGENERATE;
+    /* The slope with RT_FRAME_BITS fraction bits, to nearest: r / h <= 64
+     * keeps it below 2^30. */
+    o->k = (fx_t)fx_udiv64_32(((uint64_t)(uint32_t)o->r << RT_FRAME_BITS) +
+                                  (uint32_t)o->h / 2,
+                              (uint32_t)o->h);
+    /* Where the cone is thin (thin_side): 2^-6 of the frame over k, both
+     * with RT_FRAME_BITS fraction bits. */
+    const uint64_t th =
+        ((uint64_t)1 << (2 * RT_FRAME_BITS - 6)) / (uint32_t)o->k;
+    o->rinv = th > UINT32_MAX ? UINT32_MAX : (uint32_t)th;
+    return upright_bounds(o);
+}
 
 /* Cylinders and cones are solved in a frame centred on the bounding
  * sphere and scaled by 2^-ushift, so that the sphere's radius is between
@@ -36,36 +103,27 @@ static int64_t shift_round(int64_t v, int n)
     return (v + ((int64_t)1 << (n - 1))) >> n;
 }
 
-/* shift_round out of line, for the rare paths (thin_side, upright_thin),
- * where each inlined copy of its variable 64-bit shifts costs about 40
- * bytes (#17: 580 bytes less flash on the an385). */
-RT_COLD static int64_t shift_round_cold(int64_t v, int n)
+/* shift_round for the rare paths (thin_side, upright_thin): one function,
+ * which the compiler need not copy into each of them. */
+static int64_t shift_round_cold(int64_t v, int n)
 {
     return shift_round(v, n);
 }
 
 /* The low 32 bits of (t b + 2^(n - 1)) 2^-n, 0 < n < 32, for a unit
- * component b. On the M0, for n > 16 and a 32-bit t, from 16-bit
- * products in 32 bits (fx_mulsh). */
+ * component b: fx_mul_round for a 32-bit t. */
 static inline uint32_t frame_td(int64_t t, int32_t b, int n)
 {
-    if (!FX_SOFT_MUL64 || t != (int32_t)t || n <= 16) {
-        const uint64_t u = (uint64_t)(t * b) + ((uint32_t)1 << (n - 1));
-        return ((uint32_t)u >> n) | ((uint32_t)(u >> 32) << (32 - n));
-    }
-    return (uint32_t)fx_mulsh((int32_t)t, b, (unsigned)n);
+    if (t == (int32_t)t)
+        return (uint32_t)fx_mul_round((int32_t)t, b, (unsigned)n);
+    const uint64_t u = (uint64_t)(t * b) + ((uint32_t)1 << (n - 1));
+    return ((uint32_t)u >> n) | ((uint32_t)(u >> 32) << (32 - n));
 }
 
-/* a b, exact, |a|, |b| <= 2^30: on the M0 with the middle partial products
- * (below 2^30) summed in 32 bits (#17: hit_upright 50 instructions less). */
+/* a b, exact, |a|, |b| <= 2^30. */
 static inline int64_t frame_mul(int32_t a, int32_t b)
 {
-    if (!FX_SOFT_MUL64)
-        return fx_imul64(a, b);
-    const int32_t ah = a >> 16, bh = b >> 16;
-    const uint32_t al = (uint32_t)a & 0xFFFFu, bl = (uint32_t)b & 0xFFFFu;
-    const int32_t mid = ah * (int32_t)bl + (int32_t)al * bh;
-    return (int64_t)(fx_pair64((uint32_t)(ah * bh), al * bl) + fx_mid64(mid));
+    return fx_imul64_30(a, b);
 }
 
 /* A product of two frame values back to RT_FRAME_BITS fraction bits,
@@ -98,13 +156,12 @@ static int64_t frame_div(int64_t n, int64_t d)
  * a cone's apex. `real`: the roots are known to be real (a ray steeper
  * than a cone's side meets both nappes), so any negative discriminant is
  * rounding. */
-RT_ALWAYS_INLINE static inline int quadratic(int64_t a, int64_t b,
-                                             int64_t c, int real,
-                                             int64_t root[2])
+static inline int quadratic(int64_t a, int64_t b, int64_t c, int real,
+                            int64_t root[2])
 {
     /* A common scale brings the coefficients within 30 bits (only a
-     * flat cone's need it); the roots do not change. A range test first
-     * (#17: 5 fewer instructions a call on the M3, 27 on the M0). */
+     * flat cone's need it); the roots do not change. A range test first,
+     * as that is rare. */
     const uint64_t lim = ((uint64_t)1 << 30) - 1; /* |v| < 2^30 */
     int sh = 0;
     if ((uint64_t)a + lim > 2 * lim || (uint64_t)b + lim > 2 * lim ||
@@ -149,7 +206,7 @@ RT_ALWAYS_INLINE static inline int quadratic(int64_t a, int64_t b,
     return 2;
 }
 
-/* A cylinder's or cone's frame for one ray (hit_upright): the frame is
+/* A cylinder's or cone's frame for one ray (upright_hit): the frame is
  * centred on the bounding sphere and scaled by 2^-ushift, with
  * RT_FRAME_BITS fraction bits; a frame value is a world raw value times
  * 2^sf. */
@@ -161,16 +218,12 @@ typedef struct {
 } upright_frame;
 
 /* frame_set's p, yb and yt (frame_set's f->sf is sf) for an object
- * beyond 2^8 in radius (or a build with few unit bits), in 64-bit values;
- * with shift_round_cold where cold. */
-RT_ALWAYS_INLINE static inline void frame_set_wide(upright_frame *f,
-                                                   const rt_object *o,
-                                                   const rt_ray *r,
-                                                   int64_t tca, int sf,
-                                                   int cold)
+ * beyond 2^8 in radius (or a build with few unit bits), in 64-bit
+ * values. */
+static void frame_set_wide(upright_frame *f, const rt_object *o,
+                           const rt_ray *r, int64_t tca, int sf)
 {
-    int64_t (*const sr)(int64_t, int) =
-        cold ? shift_round_cold : shift_round;
+    int64_t (*const sr)(int64_t, int) = shift_round_cold;
     const int dsh = FX_UBITS - sf;
     f->p[0] = (int32_t)(sr(tca * r->d.x, dsh) -
                         sr((int64_t)o->bc.x - r->o.x, -sf));
@@ -182,17 +235,9 @@ RT_ALWAYS_INLINE static inline void frame_set_wide(upright_frame *f,
     f->yt = (int32_t)sr((int64_t)o->a.y + o->h - o->bc.y, -sf);
 }
 
-/* frame_set_wide out of line. */
-RT_COLD static void frame_set_wide_call(upright_frame *f, const rt_object *o,
-                                        const rt_ray *r, int64_t tca, int sf)
-{
-    frame_set_wide(f, o, r, tca, sf, 1);
-}
-
 /* Sets *f for object o and ray r, whose bounding-sphere tca is given. */
-RT_ALWAYS_INLINE static inline void frame_set(upright_frame *f,
-                                              const rt_object *o,
-                                              const rt_ray *r, int64_t tca)
+static inline void frame_set(upright_frame *f, const rt_object *o,
+                             const rt_ray *r, int64_t tca)
 {
     const int sf = RT_FRAME_BITS - 16 - o->ushift;
     f->sf = sf;
@@ -202,8 +247,7 @@ RT_ALWAYS_INLINE static inline void frame_set(upright_frame *f,
     const int dsh = FX_UBITS - sf;
     if (sf >= 0 && (FX_UBITS > 23 || dsh > 0)) { /* sf <= 23 */
         /* Up to 2^8 in radius: 32-bit shifts of a product's two words and
-         * a difference's low word; on the M0 no library multiply (#17: 28
-         * fewer instructions a frame, 178 on the M0). */
+         * a difference's low word. */
         f->p[0] = (int32_t)(frame_td(tca, r->d.x, dsh) -
                             (((uint32_t)o->bc.x - r->o.x) << sf));
         f->p[1] = (int32_t)(frame_td(tca, r->d.y, dsh) -
@@ -215,23 +259,11 @@ RT_ALWAYS_INLINE static inline void frame_set(upright_frame *f,
         f->yb = (int32_t)(((uint32_t)o->a.y - (uint32_t)o->bc.y) << sf);
         f->yt = (int32_t)(((uint32_t)o->a.y + (uint32_t)o->h -
                            (uint32_t)o->bc.y) << sf);
-    } else if (FX_SOFT_MUL64) {
-        frame_set_wide(f, o, r, tca, sf, 0);
     } else {
-        /* Rare: out of line on the an385, whose flash is short (#17: 164
-         * bytes less); into w, not f itself, which may then stay in
-         * registers. Inline on the M0 (26 instructions a pixel fewer on
-         * the mirrors scene). */
-        upright_frame w;
-        frame_set_wide_call(&w, o, r, tca, sf);
-        for (int i = 0; i < 3; i++)
-            f->p[i] = w.p[i];
-        f->yb = w.yb;
-        f->yt = w.yt;
+        frame_set_wide(f, o, r, tca, sf);
     }
     /* The direction with RT_FRAME_BITS fraction bits, as shift_round
-     * gives it, in 32 bits (#17: 51 fewer instructions a frame, 13 on
-     * the M0). */
+     * gives it, in 32-bit shifts. */
     const int rs = FX_UBITS > RT_FRAME_BITS ? FX_UBITS - RT_FRAME_BITS : 0;
     const int ls = rs - (FX_UBITS - RT_FRAME_BITS);
     const int32_t dh = (int32_t)(((int64_t)1 << rs) >> 1);
@@ -313,7 +345,7 @@ static int thin_side(const rt_object *o, const rt_ray *r, int64_t tca,
     const int32_t qz = (int32_t)shift_round_cold(z46, n);
     const int64_t qw = shift_round_cold(w46, n);
     const int64_t qy = shift_round_cold(y46, n); /* height below the apex */
-    /* The cone's coefficients there, as in hit_upright; a is the same at
+    /* The cone's coefficients there, as in upright_hit; a is the same at
      * any scale. */
     const int32_t kdy = (int32_t)frame_round(fx_imul64(o->k, d[1]));
     const int64_t a = frame_round(fx_imul64(d[0], d[0]) +
@@ -352,11 +384,10 @@ static int thin_side(const rt_object *o, const rt_ray *r, int64_t tca,
  * base, bottom, and at the top, a cylinder's only) nearer than *best: 1
  * with *best and *part (1 + cap) set for a hit. ur is the radius in the
  * frame. */
-RT_ALWAYS_INLINE static inline int upright_caps(const rt_object *o,
-                                                const rt_ray *r, int64_t tca,
-                                                const upright_frame *f,
-                                                int32_t ur, fx_t tmin,
-                                                fx_t *best, uint16_t *part)
+static inline int upright_caps(const rt_object *o, const rt_ray *r,
+                               int64_t tca, const upright_frame *f,
+                               int32_t ur, fx_t tmin, fx_t *best,
+                               uint16_t *part)
 {
     const int sf = f->sf;
     const int64_t rim = (int64_t)RT_RIM_SLACK << (sf > 0 ? sf : 0);
@@ -366,12 +397,12 @@ RT_ALWAYS_INLINE static inline int upright_caps(const rt_object *o,
     for (int cap = 0; cap < 2; cap++) {
         if (!(o->caps & (cap ? RT_CAP_TOP : RT_CAP_BOTTOM)))
             continue;
-        /* t in world units, as hit_quad computes it for a plane y =
-         * const: a cap in a floor quad's plane (a shape standing on the
-         * floor) gives the very same t, so the tie goes to the earlier
-         * object instead of flipping with rounding. */
+        /* t in world units, as a flat quad's for a plane y = const: a
+         * cap in a floor quad's plane (a shape standing on the floor)
+         * gives the very same t, so the tie goes to the earlier object
+         * instead of flipping with rounding. */
         int64_t cy = cap ? (int64_t)o->a.y + o->h : o->a.y;
-        int64_t tw = plane_t(cy, r->o.y, r->d.y);
+        int64_t tw = rt_plane_t(cy, r->o.y, r->d.y);
         if (tw <= tmin || tw >= *best)
             continue; /* take() would refuse it */
         if (tw - tca > o->br || tca - tw > o->br)
@@ -397,11 +428,11 @@ RT_ALWAYS_INLINE static inline int upright_caps(const rt_object *o,
     return found;
 }
 
-/* hit_upright's answer again for a cone whose side had a root s0 where
+/* upright_hit's answer again for a cone whose side had a root s0 where
  * the cone is thin: the side's hit is thin_side's, and the caps are
  * tested again against it; or, if thin_side declines, the answer found
- * (with *t and *part) stands. f is hit_upright's frame for the ray. */
-RT_COLD static int upright_thin(const rt_object *o, const rt_ray *r,
+ * (with *t and *part) stands. f is upright_hit's frame for the ray. */
+static int upright_thin(const rt_object *o, const rt_ray *r,
                                 int64_t tca, const upright_frame *f,
                                 int64_t s0, fx_t tmin, fx_t tmax, int found,
                                 fx_t *t, uint16_t *part)
@@ -434,26 +465,17 @@ RT_COLD static int upright_thin(const rt_object *o, const rt_ray *r,
     return found;
 }
 
-/* Cylinder (kind RT_CYLINDER) or cone, in the object's frame. */
-static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
-                       fx_t tmax, fx_t *t, uint16_t *part)
+/* The side's roots for the ray of frame f (ur the radius in the frame),
+ * as frame distances from tca, in root: returns their count. *steep: a
+ * cone's side the ray is clearly steeper than (not within rounding of a
+ * generator's direction, where one root is far and saturates), whose one
+ * root is then the lower nappe's. */
+static inline int side_roots(const rt_object *o, const upright_frame *f,
+                             int32_t ur, int cone, int *steep,
+                             int64_t root[2])
 {
-    int64_t tca, h[3];
-    uint64_t disc;
-    fx_t best = tmax;
-    int64_t root[2];
-    int found = 0, cone = RT_HAS_CONE && o->kind == RT_CONE;
-    if (!bsphere(&o->bc, o->br, o->small, r, tmin, tmax, &tca, &disc, h))
-        return 0;
-    upright_frame f;
-    frame_set(&f, o, r, tca);
-    const int32_t px = f.p[0], py = f.p[1], pz = f.p[2];
-    const int32_t dx = f.d[0], dy = f.d[1], dz = f.d[2];
-    const int32_t yb = f.yb, yt = f.yt;
-    /* The radius in the frame, exact. */
-    const int32_t ur = (int32_t)shift_round(o->r, -f.sf);
-    const int64_t one = (int64_t)1 << RT_FRAME_BITS;
-
+    const int32_t px = f->p[0], py = f->p[1], pz = f->p[2];
+    const int32_t dx = f->d[0], dy = f->d[1], dz = f->d[2];
     /* Side: x^2 + z^2 = R(y)^2, R = ur (cylinder) or k (yt - y) (cone). */
     const int64_t pp = frame_mul(px, px) + frame_mul(pz, pz);
     int64_t a = frame_round(frame_mul(dx, dx) + frame_mul(dz, dz));
@@ -463,18 +485,16 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
         /* o->k is the slope with RT_FRAME_BITS fraction bits, below 2^30;
          * ky below 2^31 (|yt - py| < 2^25). */
         const int32_t kdy = (int32_t)frame_round(fx_imul64(o->k, dy));
-        const int64_t ky = frame_round(fx_imul64(o->k, yt - py));
+        const int64_t ky = frame_round(fx_imul64(o->k, f->yt - py));
         a -= frame_round(frame_mul(kdy, kdy));
         b += frame_round(mul_q(ky, kdy));
-        c = frame_round(pp - (FX_SOFT_MUL64 && ky == (int32_t)ky
+        c = frame_round(pp - (ky == (int32_t)ky
                                   ? fx_imul64((int32_t)ky, (int32_t)ky)
                                   : ky * ky));
     }
-    /* Clearly steeper than the side (not within rounding of a
-     * generator's direction, where one root is far and saturates). */
-    const int steep = cone && cone_steep(a);
-    int n = quadratic(a, b, c, steep, root);
-    if (steep && n == 2) {
+    *steep = cone && cone_steep(a);
+    int n = quadratic(a, b, c, *steep, root);
+    if (*steep && n == 2) {
         /* A ray steeper than the side meets each nappe once: the root
          * with the lower y is on the cone, however near the apex rounding
          * puts it (a y <= top threshold there lets rays through). */
@@ -482,6 +502,29 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
             root[0] = root[1];
         n = 1;
     }
+    return n;
+}
+
+/* Cylinder (kind RT_CYLINDER) or cone, in the object's frame. */
+static inline int upright_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
+                   fx_t *t, uint16_t *part)
+{
+    int64_t tca, h[3];
+    uint64_t disc;
+    fx_t best = tmax;
+    int64_t root[2];
+    int found = 0, steep;
+    const int cone = RT_HAS_CONE && o->kind == RT_CONE;
+    if (!bsphere(&o->bc, o->br, o->small, r, tmin, tmax, &tca, &disc, h))
+        return 0;
+    upright_frame f;
+    frame_set(&f, o, r, tca);
+    const int32_t py = f.p[1], dy = f.d[1];
+    const int32_t yb = f.yb, yt = f.yt;
+    /* The radius in the frame, exact. */
+    const int32_t ur = (int32_t)shift_round(o->r, -f.sf);
+    const int64_t one = (int64_t)1 << RT_FRAME_BITS;
+    const int n = side_roots(o, &f, ur, cone, &steep, root);
     for (int i = 0; i < n; i++) {
         /* Roots of a real hit lie within the bounding sphere's chord. */
         if (root[i] > 4 * one || root[i] < -4 * one)
@@ -525,9 +568,9 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
         if (root[i] <= 4 * one && root[i] >= -4 * one &&
             py + frame_round(frame_mul((int32_t)root[i], dy)) >
                 yt - (int64_t)o->rinv) {
-            /* The frame again from f, not frame_set (#17: 756 bytes less
-             * flash on the an385); a copy, so that f itself need not be
-             * kept in memory on the common path. */
+            /* The frame again from f, not frame_set, which is large; a
+             * copy, so that f itself need not be kept in memory on the
+             * common path. */
             const upright_frame fc = f;
             return upright_thin(o, r, tca, &fc, root[i], tmin, tmax, found,
                                 t, part);
@@ -535,4 +578,3 @@ static int hit_upright(const rt_object *o, const rt_ray *r, fx_t tmin,
     return found;
 }
 
-#endif /* RT_UPRIGHT_H */
