@@ -30,7 +30,7 @@ CORE_WARN := $(WARN) -Wconversion -Wno-sign-conversion
 
 # The core's layer folders, lowest first (docs/architecture.md). Every
 # file includes its headers by name; CORE_INC puts every folder on the path.
-CORE_DIRS := core/fx core/scene core/shapes core/trace core/accel core/frame
+CORE_DIRS := core/fx core/scene core/shapes core/parse core/accel core/trace core/frame
 CORE_SRC := $(sort $(wildcard $(addsuffix /*.c,$(CORE_DIRS))))
 CORE_HDR := $(sort $(wildcard $(addsuffix /*.h,$(CORE_DIRS))))
 CORE_INC := $(addprefix -I,$(CORE_DIRS))

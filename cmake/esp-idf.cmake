@@ -9,7 +9,7 @@
 file(GLOB fixtrace_sources ${CMAKE_CURRENT_LIST_DIR}/../core/*/*.c)
 idf_component_register(
     SRCS ${fixtrace_sources}
-    INCLUDE_DIRS core/fx core/scene core/shapes core/accel core/trace
+    INCLUDE_DIRS core/fx core/scene core/shapes core/parse core/accel core/trace
                  core/frame)
 # Optimised whatever the project's level: the renderer is several times
 # slower without, and larger.

@@ -132,9 +132,9 @@ FW_PORT_SRC := port/baremetal/common.c port/baremetal/semihost.c \
     $(FW_OUT_SRC) port/baremetal/libc.c $(FW_BOARD_SRC)
 FW_TABLES_C := $(FW_BUILD)/scene_tables.c
 # The scene parser's files, which a pruned build leaves out.
-FW_PARSER_SRC := core/scene/rt_parse.c core/scene/rt_parse_obj.c core/scene/rt_parse_mesh.c \
-    core/scene/rt_lex.c \
-    core/scene/rt_lex_field.c
+FW_PARSER_SRC := core/parse/rt_parse.c core/parse/rt_parse_obj.c core/parse/rt_parse_mesh.c \
+    core/parse/rt_lex.c \
+    core/parse/rt_lex_field.c
 ifeq ($(FW_APP),bringup)
 FW_SRC := $(FW_PORT_SRC) port/baremetal/bringup.c
 FW_SCENE_OBJ :=

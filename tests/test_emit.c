@@ -135,7 +135,7 @@ static void settings(char *buf, size_t n)
 }
 
 #define STRICT "-std=c99 -pedantic -Wall -Wextra -Werror -Wshadow -Wundef " \
-               "-Wconversion -Icore/fx -Icore/scene -Icore/shapes -Icore/frame"
+               "-Wconversion -Icore/fx -Icore/scene -Icore/shapes -Icore/parse -Icore/frame"
 
 /* Writes tmp/s<i>.c for every scene, and tmp/checker.c, which includes
  * them all under their own names and writes their bytes to argv[1]. */

@@ -26,7 +26,7 @@ import re
 import subprocess
 import sys
 
-LAYERS = ["fx", "scene", "shapes", "accel", "trace", "frame"]
+LAYERS = ["fx", "scene", "shapes", "parse", "accel", "trace", "frame"]
 CORE = "core"
 MAX_FUNCTION = 100
 MAX_FILE = 500
@@ -170,8 +170,9 @@ def main(argv):
             if not os.path.isdir(d):
                 continue
             for obj in sorted(os.listdir(d)):
-                if not obj.endswith(".o"):
-                    continue
+                if not obj.endswith(".o") or not os.path.exists(
+                        os.path.join(CORE, layer, obj[:-2] + ".c")):
+                    continue  # not an object of today's sources
                 path = os.path.join(d, obj)
                 nm = subprocess.run(["nm", path], capture_output=True,
                                     text=True, check=True).stdout
