@@ -225,7 +225,7 @@ def main(argv):
 
     faults = []
     doc = open("docs/architecture.md", encoding="utf-8").read()
-    named = set(re.findall(r"`((?:fx|rt)_\w+\.[ch])`", doc))
+    named = set(re.findall(r"`((?:fx|rt|fixtrace)_\w+\.[ch])`", doc))
     for layer, name, path in files:
         if name not in named:
             faults.append("%s is not in docs/architecture.md" % path)
