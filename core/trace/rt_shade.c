@@ -239,8 +239,8 @@ RT_NOINLINE static rt_rgb trace(const rt_tracer *tr, rt_work *wk,
     uint16_t part = 0;
     if (!rt_nearest(tr, wk, r, skip, from, grid, &t, &oi, &part))
         return tr->scene->background;
-    if (wk->sign) /* a draft render tells its pixels apart by their hits */
-        rt_draft_sign_hit(wk, tr->scene, oi, r, t, w);
+    if (wk->on_hit)
+        wk->on_hit(wk->hit_ctx, tr->scene, oi, r, t, w);
     return shade(tr, wk, r, depth, w, oi, part, t);
 }
 
@@ -283,7 +283,7 @@ rt_rgb rt_shade_camera(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
         wk->budget = tr->cut_budget; /* a new sample */
     if (h->obj == RT_NO_OBJECT)
         return tr->scene->background;
-    if (wk->sign)
-        rt_draft_sign_hit(wk, tr->scene, h->obj, r, h->t, FX_ONE);
+    if (wk->on_hit)
+        wk->on_hit(wk->hit_ctx, tr->scene, h->obj, r, h->t, FX_ONE);
     return shade(tr, wk, r, 0, FX_ONE, h->obj, h->part, h->t);
 }
