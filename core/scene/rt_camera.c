@@ -1,13 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* rt_camera: the camera frame of a render (rt_camera.h). */
-/* The soft 64-bit products (FX_SOFT_MUL64) out of line (fx_math.h): this
- * file's code runs once a render or a row (#17: 60 bytes less flash on
- * the m0). */
-#define FX_MUL64_CALL 1
 #include "rt_camera.h"
 
-/* Once a render: compiled for size (RT_COLD). */
-RT_COLD void rt_cam_setup(rt_cam_frame *cf, const rt_scene *s, unsigned width,
+void rt_cam_setup(rt_cam_frame *cf, const rt_scene *s, unsigned width,
                   unsigned height, unsigned n)
 {
     /* look - eye in 64 bits: exact however far apart the two are. */
@@ -36,8 +31,7 @@ static int walk_fits(int64_t v, int fb)
     return v >= ((int64_t)1 << fb) - lim && v < lim;
 }
 
-/* Once a row: compiled for size (RT_COLD). */
-RT_COLD void rt_cam_walk_init(rt_cam_walk *cw, const rt_cam_frame *cf,
+void rt_cam_walk_init(rt_cam_walk *cw, const rt_cam_frame *cf,
                               const rt_cam_ray *b, unsigned width,
                               unsigned x0, unsigned x1)
 {
@@ -76,7 +70,7 @@ RT_COLD void rt_cam_walk_init(rt_cam_walk *cw, const rt_cam_frame *cf,
     }
 }
 
-RT_COLD fx_dir3 rt_cam_walk_dir_wide(const rt_cam_walk *cw)
+fx_dir3 rt_cam_walk_dir_wide(const rt_cam_walk *cw)
 {
     const int fb = cw->fbits;
     return fx_d3_normalize64(cw->v[0] >> fb, cw->v[1] >> fb, cw->v[2] >> fb);
