@@ -364,4 +364,28 @@ static inline int32_t fx_mul_rsh(int32_t a, int32_t c, unsigned s)
                      (uint32_t)(low >> k));
 }
 
+/* fx_powi(x, n), the same value, cheapest for 0 <= x <= 1 (a cosine).
+ * Where the CPU has no 64-bit multiply (FX_SOFT_MUL64) by 32-bit
+ * products there: every factor stays in [0, 1], so a b + 2^15 is below
+ * 2^32 unless a = b = 1; a larger x takes out-of-line products. */
+static inline fx_t fx_powi_unit(fx_t x, unsigned n)
+{
+    if (!FX_SOFT_MUL64)
+        return fx_powi(x, n);
+    const int unit = (uint32_t)x <= (uint32_t)FX_ONE;
+    uint32_t r = FX_ONE, b = (uint32_t)x;
+    while (n) {
+        if (n & 1)
+            r = !unit ? (uint32_t)((fx_umul64_call(r, b) + 0x8000u) >> 16)
+                : (r & b & (uint32_t)FX_ONE) ? (uint32_t)FX_ONE
+                                             : (r * b + 0x8000u) >> 16;
+        n >>= 1;
+        if (n)
+            b = !unit ? (uint32_t)((fx_umul64_call(b, b) + 0x8000u) >> 16)
+                : (b & (uint32_t)FX_ONE) ? (uint32_t)FX_ONE
+                                         : (b * b + 0x8000u) >> 16;
+    }
+    return (fx_t)r;
+}
+
 #endif /* FX_MATH_H */

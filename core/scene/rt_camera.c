@@ -2,7 +2,8 @@
 /* rt_camera: the camera frame of a render (rt_camera.h). */
 #include "rt_camera.h"
 
-void rt_cam_setup(rt_cam_frame *cf, const rt_scene *s, unsigned width,
+/* Once a render: compiled for size (RT_COLD), as it is not per pixel. */
+RT_COLD void rt_cam_setup(rt_cam_frame *cf, const rt_scene *s, unsigned width,
                   unsigned height, unsigned n)
 {
     /* look - eye in 64 bits: exact however far apart the two are. */
@@ -31,7 +32,8 @@ static int walk_fits(int64_t v, int fb)
     return v >= ((int64_t)1 << fb) - lim && v < lim;
 }
 
-void rt_cam_walk_init(rt_cam_walk *cw, const rt_cam_frame *cf,
+/* Once a row: compiled for size (RT_COLD). */
+RT_COLD void rt_cam_walk_init(rt_cam_walk *cw, const rt_cam_frame *cf,
                               const rt_cam_ray *b, unsigned width,
                               unsigned x0, unsigned x1)
 {
@@ -70,7 +72,7 @@ void rt_cam_walk_init(rt_cam_walk *cw, const rt_cam_frame *cf,
     }
 }
 
-fx_dir3 rt_cam_walk_dir_wide(const rt_cam_walk *cw)
+RT_COLD fx_dir3 rt_cam_walk_dir_wide(const rt_cam_walk *cw)
 {
     const int fb = cw->fbits;
     return fx_d3_normalize64(cw->v[0] >> fb, cw->v[1] >> fb, cw->v[2] >> fb);

@@ -26,19 +26,20 @@ static inline int32_t rt_mirror_c(int32_t d, int32_t nk, int32_t n)
 }
 
 /* d.n with FX_UBITS fraction bits, rounded as fx_d3_dotu, from the exact
- * dn = fx_d3_dot_raw(d, n): the shading loop already has it. */
+ * dn = fx_d3_dot_raw(d, n): what the mirror, Snell's law and the
+ * highlight take, formed once a hit by the shading loop. */
 static inline int32_t rt_dotu_of(int64_t dn)
 {
     return (int32_t)((dn + ((int64_t)1 << (FX_UBITS - 1))) >> FX_UBITS);
 }
 
-/* Mirror direction d - 2 (d.n) n of unit d about unit n, given the exact
- * dn = fx_d3_dot_raw(d, n): formed from the rounded d.n, then only
+/* Mirror direction d - 2 (d.n) n of unit d about unit n, given dnu =
+ * rt_dotu_of(fx_d3_dot_raw(d, n)), the rounded d.n: then only
  * renormalised (fx_d3_renorm), since the reflection of a unit vector is
  * one. */
-static inline fx_dir3 rt_reflect_dir_dn(fx_dir3 d, fx_dir3 n, int64_t dn)
+static inline fx_dir3 rt_reflect_dir_dn(fx_dir3 d, fx_dir3 n, int32_t dnu)
 {
-    const int32_t nk = -rt_dotu_of(dn); /* |k| <= 2^FX_UBITS */
+    const int32_t nk = -dnu; /* |k| <= 2^FX_UBITS */
     return fx_d3_renorm(fx_d3(rt_mirror_c(d.x, nk, n.x),
                            rt_mirror_c(d.y, nk, n.y),
                            rt_mirror_c(d.z, nk, n.z)));
@@ -47,7 +48,7 @@ static inline fx_dir3 rt_reflect_dir_dn(fx_dir3 d, fx_dir3 n, int64_t dn)
 /* The same, finding d.n itself. */
 static inline fx_dir3 rt_reflect_dir(fx_dir3 d, fx_dir3 n)
 {
-    return rt_reflect_dir_dn(d, n, fx_d3_dot_raw(d, n));
+    return rt_reflect_dir_dn(d, n, rt_dotu_of(fx_d3_dot_raw(d, n)));
 }
 
 /* Bit length of a non-negative value (0 for 0). */
@@ -62,12 +63,12 @@ static inline int rt_bitlen64(uint64_t v)
  * f = eta cos_i - sqrt(k), k = 1 - eta^2 (1 - cos_i^2). Everything is in
  * FX_UBITS fraction bits, and eta^2 stays exact (Q32.32), so the
  * total-internal-reflection decision k < 0 is not noise even for a large
- * eta. dn is the exact fx_d3_dot_raw(d, n). */
-static inline int rt_refract_dn(fx_dir3 d, fx_dir3 n, int64_t dn, fx_t eta,
+ * eta. dnu is the rounded d.n, rt_dotu_of(fx_d3_dot_raw(d, n)). */
+static inline int rt_refract_dn(fx_dir3 d, fx_dir3 n, int32_t dnu, fx_t eta,
                                 fx_dir3 *t)
 {
     const int64_t one = (int64_t)1 << FX_UBITS;
-    const int32_t cosi = -rt_dotu_of(dn); /* in [0, 1] */
+    const int32_t cosi = -dnu; /* in [0, 1] */
     const int32_t sin2 =
         (int32_t)(one - (fx_imul64(cosi, cosi) >> FX_UBITS)); /* [0, 1] */
     /* eta^2 sin2 / 2^32 with eta^2 = e1 2^16 + e0 (Q32.32): two products
@@ -109,7 +110,7 @@ static inline int rt_refract_dn(fx_dir3 d, fx_dir3 n, int64_t dn, fx_t eta,
 /* rt_refract_dn, finding d.n itself. */
 static inline int rt_refract_dir(fx_dir3 d, fx_dir3 n, fx_t eta, fx_dir3 *t)
 {
-    return rt_refract_dn(d, n, fx_d3_dot_raw(d, n), eta, t);
+    return rt_refract_dn(d, n, rt_dotu_of(fx_d3_dot_raw(d, n)), eta, t);
 }
 
 #endif /* RT_BOUNCE_H */

@@ -21,19 +21,6 @@ RT_NOINLINE static rt_rgb trace(const rt_tracer *tr, rt_work *wk,
                                 const rt_ray *r, unsigned depth, fx_t w,
                                 unsigned skip, unsigned from, unsigned grid);
 
-/* What shade() knows of the surface at a hit. */
-typedef struct {
-    fx_vec3 p;         /* the hit point */
-    fx_vec3 p_out;     /* where rays leaving on the ray's side start */
-    fx_dir3 ng;        /* the geometric normal, facing the ray */
-    fx_dir3 n;         /* the shading normal (ng, or bumped), facing it */
-    int64_t dn;        /* d.n, exact (fx_d3_dot_raw) */
-    unsigned off;      /* 2^off: the offset of p_out (rt_origin_log2) */
-    unsigned tex;      /* which colour: 0 m->color, 1 m->color2 */
-    unsigned skip_out; /* what a ray leaving on the ray's side skips */
-    int outside;       /* the ray met the object's outside */
-} surface;
-
 /* The hit point of r at t, each product rounded once (fx_v3_madd_d):
  * from a small origin a hit below 2^30 cannot leave the range, so no
  * saturating add. */
@@ -48,6 +35,14 @@ static inline fx_vec3 hit_point(const rt_ray *r, fx_t t)
     if (r->small && t < ((fx_t)1 << 30))
         return fx_v3(r->o.x + ox, r->o.y + oy, r->o.z + oz);
     return fx_v3(fx_add(r->o.x, ox), fx_add(r->o.y, oy), fx_add(r->o.z, oz));
+}
+
+/* Where rays leaving p on the side of unit normal ng start: 2^off
+ * along it. Most objects take RT_EPS, whose shifts are then constants. */
+static inline fx_vec3 rt_offset_point(fx_vec3 p, fx_dir3 ng, unsigned off)
+{
+    return off == RT_EPS_LOG2 ? rt_v3_madd_pow2(p, ng, RT_EPS_LOG2, 0)
+                              : rt_v3_madd_pow2(p, ng, off, 0);
 }
 
 /* The shading normal of a bumped hit of material m on object o at p (the
@@ -74,71 +69,50 @@ RT_NOINLINE static fx_dir3 bumped_normal(const rt_material *m,
     return n;
 }
 
-/* The surface of the hit of r at t on object oi (o, of material m), part
- * part: the point, the normals facing the ray, the side, the texture's
- * colour and where rays leaving it start. */
-static inline void find_surface(surface *sf, const rt_object *o,
-                                const rt_material *m, const rt_ray *r,
-                                fx_t t, unsigned oi, uint16_t part)
+/* Which colour of material m the texture gives object o at p (the
+ * outward normal ng_out): 0 m->color, 1 m->color2. The texture is read
+ * just inside the surface: see render-model.md. */
+static inline unsigned texture(const rt_material *m, const rt_object *o,
+                               fx_vec3 p, fx_dir3 ng_out)
 {
-    fx_vec3 p = hit_point(r, t);
-    const fx_dir3 ng_out =
-        rt_normal(o, r, t, &p, part, m->reflect > 0 || m->transparency > 0);
-    sf->p = p;
-    const int64_t dn = fx_d3_dot_exact(r->d, ng_out);
-    sf->outside = o->kind == RT_QUAD || dn <= 0;
-    sf->ng = dn > 0 ? fx_d3_neg(ng_out) : ng_out;
-    /* For n = ng, d.n is -|d.ng| (negating each product is exact). */
-    sf->n = sf->ng;
-    sf->dn = dn > 0 ? -dn : dn;
-    if (RT_HAS_BUMP && m->bump != 0) {
-        sf->n = bumped_normal(m, o, r, sf->p, sf->ng, sf->outside);
-        sf->dn = fx_d3_dot_exact(r->d, sf->n);
-    }
-    /* The texture is read just inside the surface: see render-model.md. */
-    sf->tex = 0;
-    if (RT_HAS_TEXTURES && m->texture != RT_TEX_NONE)
-        sf->tex = rt_texel(m, o, rt_v3_madd_pow2(sf->p, ng_out, RT_EPS_LOG2, 1));
-    /* Made here, not on first use: nearly every hit casts a shadow or a
-     * mirror ray. Most objects take RT_EPS: its shifts are constants. */
-    sf->off = rt_origin_log2(o);
-    sf->p_out = sf->off == RT_EPS_LOG2
-                    ? rt_v3_madd_pow2(sf->p, sf->ng, RT_EPS_LOG2, 0)
-                    : rt_v3_madd_pow2(sf->p, sf->ng, sf->off, 0);
-    sf->skip_out = (o->convex && sf->outside) ? oi : RT_NO_OBJECT;
+    if (!RT_HAS_TEXTURES || m->texture == RT_TEX_NONE)
+        return 0;
+    return rt_texel(m, o, rt_v3_madd_pow2(p, ng_out, RT_EPS_LOG2, 1));
 }
 
-/* Adds light li's Lambert term and Phong highlight at sf (object o) to
- * *c, unless the light is behind the surface or in shadow. The light is
- * seen from p_out, where its shadow ray starts: the shadow ray then ends
- * at the light, and a surface through the light is met only there,
- * beyond t_max. */
+/* Adds light li's Lambert term and Phong highlight at the hit of r on
+ * object o (colour tex, unit normal n facing the ray, d.n rounded to
+ * FX_UBITS fraction bits in dn) to *c, unless the light is behind the surface or in shadow. The
+ * light is seen from p_out, where its shadow ray starts (skipping
+ * skip): the shadow ray then ends at the light, and a surface through
+ * the light is met only there, beyond t_max. */
 static inline void add_light(rt_rgb *c, const rt_tracer *tr, rt_work *wk,
-                             const rt_ray *r, const surface *sf,
-                             const rt_object *o, unsigned li)
+                             const rt_ray *r, const rt_object *o,
+                             unsigned tex, fx_dir3 n, int32_t dn,
+                             fx_vec3 p_out, unsigned skip, unsigned li)
 {
     const rt_material *m = &tr->scene->mat[o->material];
     const rt_light *l = &tr->scene->light[li];
-    const fx_vec3 lv = fx_v3_sub(l->pos, sf->p_out);
-    const fx_dir3 ld = fx_d3_normalize(lv);
+    const fx_vec3 lv = fx_v3_sub(l->pos, p_out);
+    fx_dir3 ld[1];
+    ld[0] = fx_d3_normalize(lv);
     /* n.ld as fx_d3_dot rounds it; the highlight takes it exact. */
-    const int64_t nl = fx_d3_dot_exact(sf->n, ld);
+    const int64_t nl = fx_d3_dot_exact(n, ld[0]);
     const fx_t ndl = rt_cos_fx(nl);
     fx_t ks;
     if (ndl <= 0)
         return;
     if (RT_HAS_SHADOWS && (tr->feat & RT_FEAT_SHADOWS) &&
-        rt_in_shadow(tr, wk, li, lv, ld, sf->p_out, sf->skip_out))
+        rt_in_shadow(tr, wk, li, lv, ld[0], p_out, skip))
         return;
-    const rt_rgb base = sf->tex ? m->color2 : m->color;
+    const rt_rgb base = tex ? m->color2 : m->color;
     /* Lambert: |kdl| <= 1 (the parser's ranges) keeps it in range. */
     rt_rgb_madd(c,
-                li == 0 ? tr->lit[o->material][sf->tex]
+                li == 0 ? tr->lit[o->material][tex]
                         : rt_rgb_mul(base, l->color),
                 fx_wmul(tr->kdl[o->material], ndl));
     if (RT_HAS_SPECULAR && m->specular > 0 &&
-        rt_highlight(m, nl, sf->dn, ld, r->d, tr->spec_min[o->material],
-                     &ks))
+        rt_highlight(m, nl, dn, ld[0], r->d, tr->spec_min[o->material], &ks))
         rt_rgb_madd(c, l->color, ks); /* Phong */
 }
 
@@ -174,51 +148,64 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     const rt_object *o = &s->obj[oi];
     const rt_material *m = &s->mat[o->material];
     const fx_t kr = m->reflect, kt = m->transparency;
-    surface sf;
-    find_surface(&sf, o, m, r, t, oi, part);
-    rt_rgb c = tr->amb[o->material][sf.tex];
+    fx_vec3 p = hit_point(r, t);
+    const fx_dir3 ng_out = rt_normal(o, r, t, &p, part, kr > 0 || kt > 0);
+    const int64_t dn_out = fx_d3_dot_exact(r->d, ng_out);
+    const int outside = o->kind == RT_QUAD || dn_out <= 0;
+    const fx_dir3 ng = dn_out > 0 ? fx_d3_neg(ng_out) : ng_out; /* facing */
+    fx_dir3 n = ng; /* the shading normal */
+    /* d.n rounded, as the highlights and the secondary rays take it: for
+     * n = ng from -|d.ng| (negating each product is exact). */
+    int32_t dn = rt_dotu_of(dn_out > 0 ? -dn_out : dn_out);
+    if (RT_HAS_BUMP && m->bump != 0) {
+        n = bumped_normal(m, o, r, p, ng, outside);
+        dn = rt_dotu_of(fx_d3_dot_exact(r->d, n));
+    }
+    const unsigned tex = texture(m, o, p, ng_out);
+    const unsigned off = rt_origin_log2(o); /* rays leave 2^off off */
+    const fx_vec3 p_out = rt_offset_point(p, ng, off);
+    const unsigned skip_out = (o->convex && outside) ? oi : RT_NO_OBJECT;
+    rt_rgb c = tr->amb[o->material][tex];
     const unsigned n_lights =
         RT_HAS_MULTILIGHT ? s->n_lights : (s->n_lights ? 1u : 0u);
     /* Inside a closed object every light outside it is hidden. */
-    const int dark = !sf.outside && rt_sealed_dark(&tr->sealed, oi);
+    const int dark = !outside && rt_sealed_dark(&tr->sealed, oi);
     for (unsigned li = 0; !dark && li < n_lights; li++)
-        add_light(&c, tr, wk, r, &sf, o, li);
+        add_light(&c, tr, wk, r, o, tex, n, dn, p_out, skip_out, li);
     if (depth >= tr->max_depth)
         return c;
-
-    const fx_t wr = rt_child_weight(w, kr);
-    if (RT_HAS_REFLECTION && kr > 0 && rt_worth_tracing(tr, wk, wr, depth + 1)) {
+    fx_t wr, wt;
+    if (RT_HAS_REFLECTION && kr > 0 &&
+        rt_worth_tracing(tr, wk, wr = rt_child_weight(w, kr), depth + 1)) {
         RT_COUNT(wk, reflection);
         rt_rgb_madd(&c,
-                    secondary(tr, wk, sf.p_out,
-                              rt_reflect_dir_dn(r->d, sf.n, sf.dn), depth,
-                              wr, sf.skip_out, oi,
+                    secondary(tr, wk, p_out, rt_reflect_dir_dn(r->d, n, dn),
+                              depth, wr, skip_out, oi,
                               leaving_grid(tr, oi, r, 1)),
                     kr);
     }
-    const fx_t wt = rt_child_weight(w, kt);
-    if (RT_HAS_REFRACTION && kt > 0 && rt_worth_tracing(tr, wk, wt, depth + 1)) {
+    if (RT_HAS_REFRACTION && kt > 0 &&
+        rt_worth_tracing(tr, wk, wt = rt_child_weight(w, kt), depth + 1)) {
         /* n faces the ray either way, so eta flips with the side. */
-        const fx_t eta = sf.outside ? m->ior_inv : m->ior;
-        const unsigned grid = leaving_grid(tr, oi, r, 0);
-        fx_dir3 td;
-        rt_rgb tc;
-        if (!rt_refract_dn(r->d, sf.n, sf.dn, eta, &td)) {
+        const fx_t eta = outside ? m->ior_inv : m->ior;
+        fx_vec3 from = p_out;
+        fx_dir3 d;
+        unsigned skip = skip_out;
+        if (!rt_refract_dn(r->d, n, dn, eta, &d)) {
             RT_COUNT(wk, reflection); /* total internal reflection */
-            tc = secondary(tr, wk, sf.p_out,
-                           rt_reflect_dir_dn(r->d, sf.n, sf.dn), depth, wt,
-                           sf.skip_out, oi, grid);
+            d = rt_reflect_dir_dn(r->d, n, dn);
         } else {
+            RT_COUNT(wk, refraction);
+            from = rt_v3_madd_pow2(p, ng, off, 1);
             /* A convex object skips itself on the way out, and a quad
              * (both of whose sides are its outside) either way. */
-            const unsigned skip_in =
-                (o->convex && (!sf.outside || o->kind == RT_QUAD))
-                    ? oi : RT_NO_OBJECT;
-            RT_COUNT(wk, refraction);
-            tc = secondary(tr, wk, rt_v3_madd_pow2(sf.p, sf.ng, sf.off, 1),
-                           td, depth, wt, skip_in, oi, grid);
+            skip = (o->convex && (!outside || o->kind == RT_QUAD))
+                       ? oi : RT_NO_OBJECT;
         }
-        rt_rgb_madd(&c, tc, kt);
+        rt_rgb_madd(&c,
+                    secondary(tr, wk, from, d, depth, wt, skip, oi,
+                              leaving_grid(tr, oi, r, 0)),
+                    kt);
     }
     return c;
 }
