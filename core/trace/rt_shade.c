@@ -39,7 +39,7 @@ static inline fx_vec3 hit_point(const rt_ray *r, fx_t t)
 
 /* Where rays leaving p on the side of unit normal ng start: 2^off
  * along it. Most objects take RT_EPS, whose shifts are then constants. */
-static inline fx_vec3 rt_offset_point(fx_vec3 p, fx_dir3 ng, unsigned off)
+static inline fx_vec3 offset_point(fx_vec3 p, fx_dir3 ng, unsigned off)
 {
     return off == RT_EPS_LOG2 ? rt_v3_madd_pow2(p, ng, RT_EPS_LOG2, 0)
                               : rt_v3_madd_pow2(p, ng, off, 0);
@@ -81,17 +81,18 @@ static inline unsigned texture(const rt_material *m, const rt_object *o,
 }
 
 /* Adds light li's Lambert term and Phong highlight at the hit of r on
- * object o (colour tex, unit normal n facing the ray, d.n rounded to
- * FX_UBITS fraction bits in dn) to *c, unless the light is behind the surface or in shadow. The
- * light is seen from p_out, where its shadow ray starts (skipping
- * skip): the shadow ray then ends at the light, and a surface through
- * the light is met only there, beyond t_max. */
+ * object o of material m (colour tex, unit normal n facing the ray, d.n
+ * rounded to FX_UBITS fraction bits in dn) to *c, unless the light is
+ * behind the surface or in shadow. The light is seen from p_out, where
+ * its shadow ray starts (skipping skip): the shadow ray then ends at the
+ * light, and a surface through the light is met only there, beyond
+ * t_max. */
 static inline void add_light(rt_rgb *c, const rt_tracer *tr, rt_work *wk,
                              const rt_ray *r, const rt_object *o,
-                             unsigned tex, fx_dir3 n, int32_t dn,
-                             fx_vec3 p_out, unsigned skip, unsigned li)
+                             const rt_material *m, unsigned tex, fx_dir3 n,
+                             int32_t dn, fx_vec3 p_out, unsigned skip,
+                             unsigned li)
 {
-    const rt_material *m = &tr->scene->mat[o->material];
     const rt_light *l = &tr->scene->light[li];
     const fx_vec3 lv = fx_v3_sub(l->pos, p_out);
     fx_dir3 ld[1];
@@ -153,17 +154,19 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     const int64_t dn_out = fx_d3_dot_exact(r->d, ng_out);
     const int outside = o->kind == RT_QUAD || dn_out <= 0;
     const fx_dir3 ng = dn_out > 0 ? fx_d3_neg(ng_out) : ng_out; /* facing */
-    fx_dir3 n = ng; /* the shading normal */
+    fx_dir3 nb; /* a bumped normal */
+    const fx_dir3 *np = &ng; /* the shading normal */
     /* d.n rounded, as the highlights and the secondary rays take it: for
      * n = ng from -|d.ng| (negating each product is exact). */
     int32_t dn = rt_dotu_of(dn_out > 0 ? -dn_out : dn_out);
     if (RT_HAS_BUMP && m->bump != 0) {
-        n = bumped_normal(m, o, r, p, ng, outside);
-        dn = rt_dotu_of(fx_d3_dot_exact(r->d, n));
+        nb = bumped_normal(m, o, r, p, ng, outside);
+        np = &nb;
+        dn = rt_dotu_of(fx_d3_dot_exact(r->d, nb));
     }
     const unsigned tex = texture(m, o, p, ng_out);
     const unsigned off = rt_origin_log2(o); /* rays leave 2^off off */
-    const fx_vec3 p_out = rt_offset_point(p, ng, off);
+    const fx_vec3 p_out = offset_point(p, ng, off);
     const unsigned skip_out = (o->convex && outside) ? oi : RT_NO_OBJECT;
     rt_rgb c = tr->amb[o->material][tex];
     const unsigned n_lights =
@@ -171,7 +174,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     /* Inside a closed object every light outside it is hidden. */
     const int dark = !outside && rt_sealed_dark(&tr->sealed, oi);
     for (unsigned li = 0; !dark && li < n_lights; li++)
-        add_light(&c, tr, wk, r, o, tex, n, dn, p_out, skip_out, li);
+        add_light(&c, tr, wk, r, o, m, tex, *np, dn, p_out, skip_out, li);
     if (depth >= tr->max_depth)
         return c;
     fx_t wr, wt;
@@ -179,7 +182,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
         rt_worth_tracing(tr, wk, wr = rt_child_weight(w, kr), depth + 1)) {
         RT_COUNT(wk, reflection);
         rt_rgb_madd(&c,
-                    secondary(tr, wk, p_out, rt_reflect_dir_dn(r->d, n, dn),
+                    secondary(tr, wk, p_out, rt_reflect_dir_dn(r->d, *np, dn),
                               depth, wr, skip_out, oi,
                               leaving_grid(tr, oi, r, 1)),
                     kr);
@@ -191,9 +194,9 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
         fx_vec3 from = p_out;
         fx_dir3 d;
         unsigned skip = skip_out;
-        if (!rt_refract_dn(r->d, n, dn, eta, &d)) {
+        if (!rt_refract_dn(r->d, *np, dn, eta, &d)) {
             RT_COUNT(wk, reflection); /* total internal reflection */
-            d = rt_reflect_dir_dn(r->d, n, dn);
+            d = rt_reflect_dir_dn(r->d, *np, dn);
         } else {
             RT_COUNT(wk, refraction);
             from = rt_v3_madd_pow2(p, ng, off, 1);
