@@ -95,6 +95,9 @@ static inline void add_light(rt_rgb *c, const rt_tracer *tr, rt_work *wk,
 {
     const rt_light *l = &tr->scene->light[li];
     const fx_vec3 lv = fx_v3_sub(l->pos, p_out);
+    /* ld an array element, which the compiler keeps in the frame where
+     * the call writes it, not in registers that would spill: a smaller
+     * frame at every bounce level. */
     fx_dir3 ld[1];
     ld[0] = fx_d3_normalize(lv);
     /* n.ld as fx_d3_dot rounds it; the highlight takes it exact. */
