@@ -36,10 +36,8 @@ typedef struct {
 } cull_obj;
 
 /* The corners of quad o relative to the eye e into q; 0 if one is 2^14
- * units away or more (then no corner culling). Not inlined, nor
- * corners_off below: once a row and quad, they would only add flash. */
-RT_NOINLINE static int quad_corners(fx_vec3 q[4], const rt_object *o,
-                                    fx_vec3 e)
+ * units away or more (then no corner culling). */
+static int quad_corners(fx_vec3 q[4], const rt_object *o, fx_vec3 e)
 {
     int ok = 1;
     for (int i = 0; i < 4; i++) {
@@ -121,7 +119,7 @@ static void row_plane_set(row_plane *rp, const rt_cam_frame *cf, int32_t k)
 /* 1 if the four corners q lie on one side of the plane through the eye
  * with unit normal nr, by a margin far beyond the rounding of h and of
  * the rays. */
-RT_NOINLINE static int corners_off(const fx_vec3 q[4], fx_dir3 nr)
+static int corners_off(const fx_vec3 q[4], fx_dir3 nr)
 {
     int above = 0, below = 0;
     for (int i = 0; i < 4; i++) {

@@ -17,7 +17,7 @@
 #include "rt_specular.h"
 #include "rt_texture.h"
 
-RT_NOINLINE static rt_rgb trace(const rt_tracer *tr, rt_work *wk,
+static rt_rgb trace(const rt_tracer *tr, rt_work *wk,
                                 const rt_ray *r, unsigned depth, fx_t w,
                                 unsigned skip, unsigned from, unsigned grid);
 
@@ -216,9 +216,9 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     return c;
 }
 
-/* rt_trace, out of line: folded into shade()'s recursion it would make
- * every level's frame larger. */
-RT_NOINLINE static rt_rgb trace(const rt_tracer *tr, rt_work *wk,
+/* rt_trace with the direction grid of the ray already chosen: the nearest
+ * hit, the hook, then shade(). */
+static rt_rgb trace(const rt_tracer *tr, rt_work *wk,
                                 const rt_ray *r, unsigned depth, fx_t w,
                                 unsigned skip, unsigned from, unsigned grid)
 {
