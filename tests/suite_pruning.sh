@@ -154,14 +154,12 @@ syms pruned | grep -qE '^rt_mesh_' &&
     bad "the pruned firmware links the mesh code:" \
         "$(syms pruned | grep -E '^rt_mesh_' | tr '\n' ' ')" || ok
 # DRAFT=0 (the default), pruned or not: no draft render code
-# (core/frame/rt_draft.c, rt_thin.c; RT_NO_DRAFT) but rt_draft_sign_hit, which
-# rt_shade.c still calls and which is then empty (at most 4 bytes). Their
-# static functions are reached only through these, so the names tell. A
-# DRAFT=64 firmware links them.
+# (core/frame/rt_draft.c, rt_thin.c; RT_NO_DRAFT). Their static functions
+# are reached only through the rt_draft_ and rt_thin_ ones, so the names
+# tell. A DRAFT=64 firmware links them.
 draft_code() {
     arm-none-eabi-nm -S "$B/$1/fixtrace.elf" |
-        awk '$NF ~ /^rt_(draft|thin)_/ && !($NF == "rt_draft_sign_hit" &&
-             NF == 4 && $2 ~ /^0+[0-4]$/) { print $NF }' | tr '\n' ' '
+        awk '$NF ~ /^rt_(draft|thin)_/ { print $NF }' | tr '\n' ' '
 }
 for v in pruned full; do
     [ -f "$B/$v/fixtrace.elf" ] && [ -z "$(draft_code $v)" ] && ok ||

@@ -17,11 +17,6 @@
  * tests that would have missed: images are bit-identical with or without
  * it (RT_CULL=0 in the tests).
  */
-/* The soft 64-bit products (FX_SOFT_MUL64) out of line (fx_math.h):
- * rt_cull_row inlines dozens (#17: 2,352 bytes less flash on the m0,
- * seed 6,986.0 -> 6,983.2 instructions a pixel there; the M3's code is
- * the same). */
-#define FX_MUL64_CALL 1
 #include "rt_cull.h"
 
 #define S_INF ((int64_t)1 << 40) /* beyond any screen offset */
@@ -41,10 +36,8 @@ typedef struct {
 } cull_obj;
 
 /* The corners of quad o relative to the eye e into q; 0 if one is 2^14
- * units away or more (then no corner culling). Not inlined, nor
- * corners_off below: once a row and quad, they would only add flash. */
-RT_NOINLINE static int quad_corners(fx_vec3 q[4], const rt_object *o,
-                                    fx_vec3 e)
+ * units away or more (then no corner culling). */
+static int quad_corners(fx_vec3 q[4], const rt_object *o, fx_vec3 e)
 {
     int ok = 1;
     for (int i = 0; i < 4; i++) {
@@ -126,7 +119,7 @@ static void row_plane_set(row_plane *rp, const rt_cam_frame *cf, int32_t k)
 /* 1 if the four corners q lie on one side of the plane through the eye
  * with unit normal nr, by a margin far beyond the rounding of h and of
  * the rays. */
-RT_NOINLINE static int corners_off(const fx_vec3 q[4], fx_dir3 nr)
+static int corners_off(const fx_vec3 q[4], fx_dir3 nr)
 {
     int above = 0, below = 0;
     for (int i = 0; i < 4; i++) {
@@ -161,7 +154,7 @@ static int row_interval(const cull_obj *k, const rt_cam_frame *cf,
          * (corners_off): no ray of the row reaches it (a floor seen
          * from above, in the rows between its far edge and the
          * horizon). Cheaper than the quad's tests it saves at each of
-         * the row's pixels (#17). */
+         * the row's pixels. */
         if (corners_off(k->q, rp->nr))
             return 0;
     }
@@ -234,8 +227,7 @@ static int64_t column(const rt_cam_frame *cf, int64_t s, unsigned width)
      * shifted right by e to 32 bits (its top bit set where e > 0), a
      * quotient below 2^21 of the shifted values is never below q and at
      * most 1 above it (the two differ by less than 2^22 / 2^31), and its
-     * product with step tells which: no 64-bit library divide (#17: 145
-     * -> 80 instructions a call on the M3, 775 -> 297 on the M0). */
+     * product with step tells which: no 64-bit library divide. */
     const uint64_t step = (uint64_t)cf->step;
     const uint32_t neg = s < 0 ? 0xFFFFFFFFu : 0;
     const uint64_t m = ((uint64_t)s << 16) ^ fx_pair64(neg, neg);
@@ -259,9 +251,9 @@ static int64_t column(const rt_cam_frame *cf, int64_t s, unsigned width)
     const uint32_t y = (width + 4u) * cf->n + (q ^ neg);
     if (y >> 31)
         return -3;
-    /* Without a divide instruction (FX_SOFT_MUL64), a shift for n = 1
-     * (#17: seed 6,987.2 -> 6,986.0 instructions a pixel on the M0). */
-    if (FX_SOFT_MUL64 && cf->n == 1)
+    /* A shift for one sample a pixel: no divide, which is a library
+     * call on a core without one. */
+    if (cf->n == 1)
         return (int64_t)(y >> 1) - 2;
     return (int64_t)(y / (2u * cf->n)) - 2;
 }

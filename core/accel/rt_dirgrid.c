@@ -100,10 +100,8 @@ static unsigned cell_of(fx_t v, fx_t v0, fx_t s)
 
 /* hi - lo is in [MIN_SPAN, 2^17 + MIN_SPAN] (lo within [-1, 1], hi
  * within [-1, 1] or MIN_SPAN above lo), so the quotient, below 2^35 /
- * 2^8, fits 32 bits: no 64-bit library divide. Out of line: inline, the
- * call costs the marking loop below registers (#17: 0.3 instructions a
- * pixel on the M3, seed). */
-static RT_COLD fx_t cells_per_unit(fx_t lo, fx_t hi)
+ * 2^8, fits 32 bits: no 64-bit library divide. */
+static fx_t cells_per_unit(fx_t lo, fx_t hi)
 {
     return (fx_t)fx_udiv64_32((uint64_t)N << RT_DIR_SBITS,
                               (uint32_t)(hi - lo));
@@ -298,7 +296,7 @@ void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s)
             mirror_eye(o, s->cam.eye, &c, &radius))
             gs->mirror[i] = add_grid(gs, &used, &next, s, c, radius, 0, i);
     }
-    /* And whether rt_passes_by may take the M0's 16-bit path: offset by
+    /* And whether rt_passes_by may take its 16-bit path: offset by
      * 2^22, each of bc's components and br is below 2^23 if their OR
      * is. */
     uint32_t span = 0;
@@ -306,16 +304,14 @@ void rt_dir_grids_prepare(rt_dir_grids *gs, const rt_scene *s)
         const rt_object *o = &s->obj[i];
         const rt_material *m = &s->mat[o->material];
         const uint32_t lim = (uint32_t)1 << 22;
-        if (FX_SOFT_MUL64)
-            span |= ((uint32_t)o->bc.x + lim) | ((uint32_t)o->bc.y + lim) |
-                    ((uint32_t)o->bc.z + lim) | (uint32_t)o->br |
-                    (o->small ? 0u : ~0u);
+        span |= ((uint32_t)o->bc.x + lim) | ((uint32_t)o->bc.y + lim) |
+                ((uint32_t)o->bc.z + lim) | (uint32_t)o->br |
+                (o->small ? 0u : ~0u);
         if (m->reflect > 0 || m->transparency > 0)
             gs->from[i] =
                 add_grid(gs, &used, &next, s, o->bc, o->br, 1, RT_NO_OBJECT);
     }
-    if (FX_SOFT_MUL64)
-        gs->near = RT_HAS_SECONDARY && span < (uint32_t)1 << 23;
+    gs->near = RT_HAS_SECONDARY && span < (uint32_t)1 << 23;
 }
 
 #endif

@@ -35,8 +35,8 @@ typedef struct {
     uint8_t light[RT_MAX_LIGHTS];   /* shadow rays to light i: grid */
     uint8_t from[RT_MAX_OBJECTS];   /* rays leaving object i: grid */
     uint8_t mirror[RT_MAX_OBJECTS]; /* eye rays mirrored off plane i */
-    uint8_t near; /* every object small, bc and br within 2^22: the M0's
-                     rt_passes_by path (rt_miss_cross_near) */
+    uint8_t near; /* every object small, bc and br within 2^22: the
+                     16-bit rt_passes_by path (rt_miss_cross_near) */
     fx_vec3 eye;                    /* the eye those grids are for */
     rt_dir_grid grid[RT_DIR_MAX_GRIDS];
     uint32_t pool[RT_DIR_POOL_WORDS];
@@ -58,10 +58,10 @@ void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
                          const rt_scene *s, fx_vec3 centre, fx_t radius,
                          int every_way, unsigned skip);
 
-/* Fraction bits of the grids' scales: 24 where 64-bit products are
- * built from 16-bit ones (the M0), so that a cell index takes one 32-bit
- * product, not three (#17: 43 instructions a pixel on the M0's seed). */
-#define RT_DIR_SBITS (FX_SOFT_MUL64 ? 24 : 32)
+/* Fraction bits of the grids' scales: 24, so that a cell index is one
+ * 32-bit product (rt_dir_index), where 64-bit products are built from
+ * 16-bit ones no dearer than elsewhere. */
+#define RT_DIR_SBITS 24
 
 /* floor(d s / 2^RT_DIR_SBITS), a cell index, for 0 <= d <= span with
  * scale s = floor(RT_DIR_GRID 2^RT_DIR_SBITS / span) and span >= 2^8,
@@ -69,9 +69,7 @@ void rt_dir_grid_prepare(rt_dir_grid *g, uint32_t *cell, unsigned words,
  * 2^RT_DIR_SBITS, below 2^32 for 24 bits. */
 static inline uint32_t rt_dir_index(fx_t d, fx_t s)
 {
-    if (!FX_SOFT_MUL64)
-        return (uint32_t)(((int64_t)d * s) >> 32);
-    return ((uint32_t)d * (uint32_t)s) >> 24;
+    return ((uint32_t)d * (uint32_t)s) >> RT_DIR_SBITS;
 }
 
 /* The bit set of objects a ray with unit direction u from g's ball may
@@ -80,8 +78,7 @@ static inline const uint32_t *rt_dir_cell(const rt_dir_grid *g, fx_t ux,
                                           fx_t uy, fx_t uz, unsigned words)
 {
     /* Within the corners: 0 <= u - x0 <= wx, one unsigned compare (u
-     * and x0 within 2^17: no overflow; #17: 12 instructions a pixel on
-     * the seed, either core). */
+     * and x0 within 2^17: no overflow). */
     const uint32_t dx = (uint32_t)(ux - g->x0), dz = (uint32_t)(uz - g->z0);
     if (dx > g->wx || dz > g->wz)
         return g->outside;

@@ -34,8 +34,7 @@ static int closed(const rt_object *o)
            (o->kind == RT_CONE && (o->caps & RT_CAP_BOTTOM));
 }
 
-/* Once a render: compiled for size (RT_COLD). */
-RT_COLD void rt_sealed_find(rt_sealed *sl, const rt_scene *s, int shadows)
+void rt_sealed_find(rt_sealed *sl, const rt_scene *s, int shadows)
 {
     memset(sl->alone, 0, sizeof sl->alone);
     memset(sl->dark, 0, sizeof sl->dark);

@@ -10,7 +10,7 @@
  * ones, on a row between. Next to the last column or row, where they are
  * not halfway, it is traced. It takes their rounded mean when they agree:
  * - the same signature: the objects and texture cells of every hit of the
- *   sample (rt_draft_sign_hit), folded with which lights any of its
+ *   sample (draft_sign_hit), folded with which lights any of its
  *   shadow rays found blocked (the blocker cache of rt_work, emptied
  *   before each sample, tells: the cache changes which tests run, never
  *   their answers);
@@ -135,6 +135,9 @@ static void get_entry(const uint8_t *p, entry *e)
     e->t = (fx_t)t; /* the bits put_entry stored */
 }
 
+static void draft_sign_hit(void *ctx, const rt_scene *s, unsigned oi,
+                           const rt_ray *r, fx_t t, fx_t w);
+
 void rt_draft_init(rt_draft *d, const rt_tracer *tr, rt_work *wk,
                    const rt_cam_frame *cf, const rt_options *o, unsigned c0,
                    unsigned c1, uint8_t *scratch)
@@ -167,20 +170,23 @@ void rt_draft_init(rt_draft *d, const rt_tracer *tr, rt_work *wk,
     rt_thin_init(&d->thin, tr->scene);
     /* A hit of weight w moves its pixel by at most about 255 w levels:
      * below the threshold, its object and cell need not match. */
-    wk->sign = 1;
-    wk->sign_w = (fx_t)(((int64_t)o->draft << 16) / 255);
+    d->sig = 0;
+    d->sign_w = (fx_t)(((int64_t)o->draft << 16) / 255);
+    wk->on_hit = draft_sign_hit;
+    wk->hit_ctx = d;
 }
 
-void rt_draft_sign_hit(rt_work *wk, const rt_scene *s, unsigned oi,
-                       const rt_ray *r, fx_t t, fx_t w)
+/* The tracer's hit hook (rt_work.on_hit) during a draft render: folds
+ * the hit into d->sig, the object and, if its material has a texture,
+ * the cell; hits too faint to matter are left out. */
+static void draft_sign_hit(void *ctx, const rt_scene *s, unsigned oi,
+                           const rt_ray *r, fx_t t, fx_t w)
 {
+    rt_draft *d = ctx;
     const rt_object *o = &s->obj[oi];
     const rt_material *m = &s->mat[o->material];
-    uint32_t h = wk->sig * 31u + oi + 1u;
-    /* Without drafts (RT_NO_DRAFT) this is empty, all of rt_draft.c and
-     * rt_thin.c that is linked: rt_shade.c's call stays (its guard there
-     * cost the M3 up to 28 instructions per pixel in register spills). */
-    if (!RT_HAS_DRAFT || w <= wk->sign_w)
+    uint32_t h = d->sig * 31u + oi + 1u;
+    if (w <= d->sign_w)
         return;
     if (RT_HAS_TEXTURES && m->texture != RT_TEX_NONE) {
         /* The cell (as rt_texel finds it, but at the hit itself), not
@@ -196,7 +202,7 @@ void rt_draft_sign_hit(rt_work *wk, const rt_scene *s, unsigned oi,
             h = h * 131u + (uint32_t)c; /* wraps: a hash */
         }
     }
-    wk->sig = h;
+    d->sig = h;
 }
 
 /* Sets up d->rs for row y, unless it already is. */
@@ -218,9 +224,9 @@ RT_NOINLINE static rt_rgb shade_sample(rt_draft *d, const rt_ray *r,
     const unsigned n_lights = d->tr->scene->n_lights;
     for (unsigned li = 0; li < n_lights; li++)
         wk->blocker[li] = RT_NO_OBJECT; /* a blocker found now is set */
-    wk->sig = 0;
+    d->sig = 0;
     rt_rgb c = rt_shade_camera(d->tr, wk, r, h);
-    uint32_t v = wk->sig;
+    uint32_t v = d->sig;
     for (unsigned li = 0; li < n_lights; li++)
         v = v * 31u + (wk->blocker[li] != RT_NO_OBJECT);
     *sig = (uint16_t)(v ^ (v >> 16));

@@ -34,6 +34,8 @@ typedef struct {
     int32_t rs_y;                       /* the row rs is set up for */
     rt_aa_spans rs;
     rt_thin thin;
+    uint32_t sig; /* the current sample's hits (draft_sign_hit) */
+    fx_t sign_w;  /* hits of rays of this weight or less are not signed */
 } rt_draft;
 
 /* Bytes of scratch rt_draft_init() takes for any n consecutive columns

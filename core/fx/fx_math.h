@@ -326,4 +326,70 @@ static inline uint8_t fx_to_u8(fx_t c)
     return (uint8_t)(((uint32_t)c * 255u + 0x8000u) >> 16);
 }
 
+/* a w, rounded to nearest (ties toward +infinity), not saturated: for a
+ * product that fits int32 (a colour channel times a weight). Cheapest
+ * for a weight 0 <= w <= 1: without a 64-bit multiply (FX_SOFT_MUL64) it
+ * is then two 32-bit products, as with a = ah 2^16 + al (0 <= al <
+ * 2^16) a w + 2^15 = ah w 2^16 + (al w + 2^15), each part within 32
+ * bits, rounded as floor((floor(x / 2^15) + 1) / 2) = floor((x + 2^15) /
+ * 2^16), which needs no constant 2^15 in a register; any other weight
+ * takes the out-of-line product. */
+static inline fx_t fx_wmul(fx_t a, fx_t w)
+{
+    if (!FX_SOFT_MUL64)
+        return (fx_t)(((int64_t)a * w + 0x8000) >> 16);
+    if ((uint32_t)w <= (uint32_t)FX_ONE) {
+        const int32_t ah = a >> 16;
+        const uint32_t al = (uint32_t)a & 0xFFFFu;
+        return ah * w + (fx_t)((((al * (uint32_t)w) >> 15) + 1u) >> 1);
+    }
+    return (fx_t)((fx_imul64_call(a, w) + 0x8000) >> 16);
+}
+
+/* (a c + 2^(s-1)) >> s modulo 2^32, for 17 <= s <= 32 and |c| <= 2^30
+ * (a unit component): a product rounded to nearest (ties up), exact
+ * wherever it fits int32. Where the CPU multiplies 32x32->64, from that
+ * product; else inline, in 32-bit pieces: with a = ah 2^16 + al and c =
+ * ch 2^16 + cl (al, cl unsigned), a c = hh 2^32 + (b1 + b2) 2^16 + l;
+ * only the terms below 2^k (k = s - 16) are added before the shift, each
+ * below 2^31 in magnitude as |ch| <= 2^14, and 2^(s-1) is a multiple of
+ * 2^16. */
+static inline int32_t fx_mul_rsh(int32_t a, int32_t c, unsigned s)
+{
+    if (!FX_SOFT_MUL64)
+        return (int32_t)(((int64_t)a * c + ((int64_t)1 << (s - 1))) >> s);
+    const unsigned k = s - 16;
+    const int32_t ah = a >> 16, ch = c >> 16;
+    const uint32_t al = (uint32_t)a & 0xFFFFu, cl = (uint32_t)c & 0xFFFFu;
+    const int32_t hh = ah * ch, b1 = ah * (int32_t)cl, b2 = (int32_t)al * ch;
+    const uint32_t lr = ((al * cl) >> 16) + ((1u << (s - 1)) >> 16);
+    const int32_t low = (b1 & (int32_t)((1u << k) - 1)) + b2 + (int32_t)lr;
+    return (int32_t)(((uint32_t)hh << (16 - k)) + (uint32_t)(b1 >> k) +
+                     (uint32_t)(low >> k));
+}
+
+/* fx_powi(x, n), the same value, cheapest for 0 <= x <= 1 (a cosine).
+ * Where the CPU has no 64-bit multiply (FX_SOFT_MUL64) by 32-bit
+ * products there: every factor stays in [0, 1], so a b + 2^15 is below
+ * 2^32 unless a = b = 1; a larger x takes out-of-line products. */
+static inline fx_t fx_powi_unit(fx_t x, unsigned n)
+{
+    if (!FX_SOFT_MUL64)
+        return fx_powi(x, n);
+    const int unit = (uint32_t)x <= (uint32_t)FX_ONE;
+    uint32_t r = FX_ONE, b = (uint32_t)x;
+    while (n) {
+        if (n & 1)
+            r = !unit ? (uint32_t)((fx_umul64_call(r, b) + 0x8000u) >> 16)
+                : (r & b & (uint32_t)FX_ONE) ? (uint32_t)FX_ONE
+                                             : (r * b + 0x8000u) >> 16;
+        n >>= 1;
+        if (n)
+            b = !unit ? (uint32_t)((fx_umul64_call(b, b) + 0x8000u) >> 16)
+                : (b & (uint32_t)FX_ONE) ? (uint32_t)FX_ONE
+                                         : (b * b + 0x8000u) >> 16;
+    }
+    return (fx_t)r;
+}
+
 #endif /* FX_MATH_H */

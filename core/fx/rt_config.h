@@ -205,9 +205,9 @@
 
 /* Draft renders (rt_draft.h, rt_options.draft): not a scene's effect but
  * a render option, so not in RT_FEATURE_LIST. -DRT_NO_DRAFT (make firmware
- * with DRAFT=0, which never asks for one) links of rt_draft.c and
- * rt_thin.c only an empty rt_draft_sign_hit; rt_render_rows then refuses
- * o->draft with RT_ERR_UNSUPPORTED. */
+ * with DRAFT=0, which never asks for one) links nothing of rt_draft.c and
+ * rt_thin.c; rt_render_rows then refuses o->draft with
+ * RT_ERR_UNSUPPORTED. */
 #ifdef RT_NO_DRAFT
 #define RT_HAS_DRAFT 0
 #else

@@ -1,12 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* rt_camera: the camera frame of a render (rt_camera.h). */
-/* The soft 64-bit products (FX_SOFT_MUL64) out of line (fx_math.h): this
- * file's code runs once a render or a row (#17: 60 bytes less flash on
- * the m0). */
-#define FX_MUL64_CALL 1
 #include "rt_camera.h"
 
-/* Once a render: compiled for size (RT_COLD). */
+/* Once a render: compiled for size (RT_COLD), as it is not per pixel. */
 RT_COLD void rt_cam_setup(rt_cam_frame *cf, const rt_scene *s, unsigned width,
                   unsigned height, unsigned n)
 {

@@ -20,18 +20,16 @@
 void rt_cutoff_bounds(uint32_t bound[RT_MAX_DEPTH + 1], const rt_scene *s);
 
 /* Weight of a ray spawned with coefficient k by a ray of weight w, rounded
- * up so that it never understates what the ray can add. On the M0, for
- * w >= 0 and k in [0, 1] (every ray), from w's 16-bit halves in 32-bit
+ * up so that it never understates what the ray can add, for w and k in
+ * [0, 1]: every ray's weight is, as a camera ray's is 1 and rt_render_rows
+ * accepts only coefficients in [0, 1]. From w's 16-bit halves in 32-bit
  * products: w k + 0xFFFF = wh k 2^16 + (wl k + 0xFFFF), the last below
- * 2^32, and the result is at most w (#17: no 64-bit library multiply). */
+ * 2^32, and the result is at most w. */
 static inline fx_t rt_child_weight(fx_t w, fx_t k)
 {
-    if (FX_SOFT_MUL64 && w >= 0 && (uint32_t)k <= (uint32_t)FX_ONE) {
-        uint32_t uk = (uint32_t)k;
-        return (fx_t)(((uint32_t)w >> 16) * uk +
-                      ((((uint32_t)w & 0xFFFFu) * uk + 0xFFFFu) >> 16));
-    }
-    return (fx_t)(((int64_t)w * k + 0xFFFF) >> 16);
+    const uint32_t uk = (uint32_t)k;
+    return (fx_t)(((uint32_t)w >> 16) * uk +
+                  ((((uint32_t)w & 0xFFFFu) * uk + 0xFFFFu) >> 16));
 }
 
 /* The ray is not traced: its cost comes off the budget. */
@@ -43,25 +41,22 @@ static inline int rt_cut_ray(rt_work *wk, uint32_t cost)
 }
 
 /* 1 if a ray of weight w at this depth must be traced. If not, its colour
- * is taken as 0 and its bound w B is taken off the sample's budget. On the
- * M0, for w <= 1, w B from B's 16-bit halves (w Bh below 2^31, w Bl
- * below 2^32): a cost of 2^32 or more, a high part over 16 bits or a carry,
- * exceeds every budget (#17: no 64-bit library multiply). */
+ * is taken as 0 and its bound w B is taken off the sample's budget. For
+ * w <= 1 (every ray, rt_child_weight), w B from B's 16-bit halves in
+ * 32-bit products (w Bh below 2^31, w Bl below 2^32): a cost of 2^32 or
+ * more, a high part over 16 bits or a carry, exceeds every budget, and so
+ * would the cost of any heavier ray. */
 static inline int rt_worth_tracing(const rt_tracer *tr, rt_work *wk, fx_t w,
                                    unsigned depth)
 {
     const uint32_t b = tr->bound[tr->max_depth - depth];
-    if (FX_SOFT_MUL64 && (uint32_t)w <= (uint32_t)FX_ONE) {
-        uint32_t hi = (uint32_t)w * (b >> 16);
-        uint32_t lo = (uint32_t)w * (b & 0xFFFFu), cost = (hi << 16) + lo;
-        if (hi > 0xFFFFu || cost < lo || cost >= wk->budget)
-            return 1;
-        return rt_cut_ray(wk, cost);
-    }
-    uint64_t cost = (uint64_t)(uint32_t)w * b;
-    if (cost >= wk->budget)
+    if ((uint32_t)w > (uint32_t)FX_ONE)
         return 1;
-    return rt_cut_ray(wk, (uint32_t)cost);
+    const uint32_t hi = (uint32_t)w * (b >> 16);
+    const uint32_t lo = (uint32_t)w * (b & 0xFFFFu), cost = (hi << 16) + lo;
+    if (hi > 0xFFFFu || cost < lo || cost >= wk->budget)
+        return 1;
+    return rt_cut_ray(wk, cost);
 }
 
 #endif /* RT_CUTOFF_H */

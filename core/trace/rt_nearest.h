@@ -46,7 +46,7 @@ static inline int rt_nearest(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
     fx_t best = FX_MAX;
     /* The ray's origin within 2^22, as every object (rt_passes_by). */
     const uint32_t lim = (uint32_t)1 << 22;
-    const int near = FX_SOFT_MUL64 && tr->grids.near &&
+    const int near = tr->grids.near &&
                      (uint32_t)r->o.x + lim < 2 * lim &&
                      (uint32_t)r->o.y + lim < 2 * lim &&
                      (uint32_t)r->o.z + lim < 2 * lim;
@@ -57,8 +57,8 @@ static inline int rt_nearest(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
         rt_try_nearest(wk, s->obj, r, from, from, near, &best, obj, part);
     } else if (grid != RT_DIR_NONE) {
         const uint32_t *cand = rt_dir_candidates(&tr->grids, grid, r->d);
-        /* Loaded once, not after every store through obj (#17: 10
-         * instructions a pixel on the M0). */
+        /* Loaded once, not after every store through obj, which the
+         * compiler must assume may alias it. */
         const unsigned words = tr->grids.words;
         for (unsigned w = 0; cand && w < words; w++) {
             for (uint32_t m = cand[w]; m; m &= m - 1) {

@@ -71,18 +71,17 @@ static inline int rt_occluded(const rt_tracer *tr, rt_work *wk,
     return 0;
 }
 
-/* fx_pd_dot_exact(lv, ld), the same exact value. On the M0, for a light
- * within 2^14 units on every axis (each component of lv within 2^30: one
- * unsigned compare of the biased values, wrapping, or-ed together) by
- * fx_dot3_small_call, which takes such values, not fx_dot3_wide_soft (#17:
- * seed 7,404 -> 7,390 instructions a pixel on the M0). */
+/* fx_pd_dot_exact(lv, ld), the same exact value: for a light within
+ * 2^14 units on every axis (each component of lv within 2^30: one
+ * unsigned compare of the biased values, wrapping, or-ed together) the
+ * small dot product (fx_d3_dot_exact takes such values), which is the
+ * cheaper one where products are built from 16-bit ones. */
 static inline int64_t rt_lv_dot(fx_vec3 lv, fx_dir3 ld)
 {
     const uint32_t b = (uint32_t)1 << 30;
-    if (FX_SOFT_MUL64 &&
-        (((uint32_t)lv.x + b) | ((uint32_t)lv.y + b) | ((uint32_t)lv.z + b)) <
-            2u * b)
-        return fx_dot3_small_call(lv.x, lv.y, lv.z, ld.x, ld.y, ld.z);
+    if ((((uint32_t)lv.x + b) | ((uint32_t)lv.y + b) | ((uint32_t)lv.z + b)) <
+        2u * b)
+        return fx_d3_dot_exact(fx_d3(lv.x, lv.y, lv.z), ld);
     return fx_pd_dot_exact(lv, ld);
 }
 

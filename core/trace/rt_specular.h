@@ -7,14 +7,13 @@
 #include "rt_ray.h"
 
 /* v (2 FX_UBITS fraction bits, below 2^62 in magnitude) in Q16.16,
- * rounded to nearest. On the Cortex-M3, for FX_UBITS >= 25, from its top
- * word alone, as the half, 2^(2 FX_UBITS - 17), lies there and the low
- * word cannot carry into the bits kept: from the 64-bit shift the
- * product of the result with a colour was a 64-bit one (#17: seed 2,629
- * -> 2,623 instructions a pixel; on the M0 mirrors grew 0.1 %). */
+ * rounded to nearest. For FX_UBITS >= 25 from its top word alone, as the
+ * half, 2^(2 FX_UBITS - 17), lies there and the low word cannot carry
+ * into the bits kept: a 32-bit result the compiler sees as one, so that
+ * its product with a colour is not formed as a 64-bit one. */
 static inline fx_t rt_cos_fx(int64_t v)
 {
-    if (!FX_SOFT_MUL64 && 2 * FX_UBITS - 17 >= 32)
+    if (2 * FX_UBITS - 17 >= 32)
         return ((int32_t)(v >> 32) +
                 ((int32_t)1 << ((2 * FX_UBITS - 49) & 31))) >>
                ((2 * FX_UBITS - 48) & 31);
@@ -22,39 +21,12 @@ static inline fx_t rt_cos_fx(int64_t v)
                   (2 * FX_UBITS - 16));
 }
 
-/* a b rounded as fx_powi's products, for 0 <= a, b <= FX_ONE: below
- * 2^32 with the half added, unless a = b = 1 (both have bit 16). */
-static inline uint32_t rt_umul_unit(uint32_t a, uint32_t b)
-{
-    if (a & b & (uint32_t)FX_ONE)
-        return (uint32_t)FX_ONE;
-    return (a * b + 0x8000u) >> 16;
-}
-
-/* fx_powi(x, n), the same value: where the core has no 64-bit multiply
- * (FX_SOFT_MUL64, the M0) by 32-bit products (rt_umul_unit) for
- * 0 <= x <= 1, as every factor then stays in [0, 1]. */
-static inline fx_t rt_powi(fx_t x, unsigned n)
-{
-    if (!FX_SOFT_MUL64 || (uint32_t)x > (uint32_t)FX_ONE)
-        return fx_powi(x, n);
-    uint32_t r = FX_ONE, b = (uint32_t)x;
-    while (n) {
-        if (n & 1)
-            r = rt_umul_unit(r, b);
-        n >>= 1;
-        if (n)
-            b = rt_umul_unit(b, b);
-    }
-    return (fx_t)r;
-}
-
 /* The highlight's weight ks (R.v)^n for unit direction ld to the light
- * and unit ray direction d, given the exact dot products (fx_d3_dot_raw)
- * nl = n.ld > 0 and nd = n.d of the unit normal n, which the shading loop
- * has already formed: 1 and *k when R.v is above rv_min
+ * and unit ray direction d, given the exact nl = n.ld > 0 (fx_d3_dot_raw)
+ * and the rounded ndu = n.d (rt_dotu_of) of the unit normal n, which the
+ * shading loop has already formed: 1 and *k when R.v is above rv_min
  * (rt_specular_min), else 0 (it would add 0). */
-static inline int rt_highlight(const rt_material *m, int64_t nl, int64_t nd,
+static inline int rt_highlight(const rt_material *m, int64_t nl, int32_t ndu,
                                fx_dir3 ld, fx_dir3 d, fx_t rv_min, fx_t *k)
 {
     /* R = 2 (n.l) n - l; rv = R.v with v = -d, so
@@ -63,15 +35,14 @@ static inline int rt_highlight(const rt_material *m, int64_t nl, int64_t nd,
     /* The product nl nd has 4 FX_UBITS fraction bits: take each to
      * FX_UBITS first (both below 1). */
     int64_t nl_u = (nl + ((int64_t)1 << (FX_UBITS - 1))) >> FX_UBITS;
-    int64_t nd_u = (nd + ((int64_t)1 << (FX_UBITS - 1))) >> FX_UBITS;
     /* Both within 2^FX_UBITS (+1): one 32x32->64 product. */
-    int64_t rv2 = ld_d - 2 * fx_imul64((int32_t)nl_u, (int32_t)nd_u);
+    int64_t rv2 = ld_d - 2 * fx_imul64((int32_t)nl_u, ndu);
     fx_t rv = rt_cos_fx(rv2);
     if (rv <= rv_min)
         return 0;
-    /* The power is in [0, 1] (fx_powi): fx_mul's value (rt_colour.h),
-     * which cannot saturate for such a weight (rt_wmul: no test). */
-    *k = rt_wmul(m->specular, rt_powi(rv, m->shininess));
+    /* The power is in [0, 1] (fx_powi): fx_mul's value, which cannot
+     * saturate for such a weight (fx_wmul: no test). */
+    *k = fx_wmul(m->specular, fx_powi_unit(rv, m->shininess));
     return 1;
 }
 

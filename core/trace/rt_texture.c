@@ -6,10 +6,9 @@
 /* floor((p - a) / d), d > 0, where p - a overflows int32 (p and a of
  * opposite signs, 2^31 < |p - a| < 2^32): its low word, with the
  * remainder, in [0, d), in the high word (a register pair, no memory).
- * The magnitude fits 32 bits, so one 32-bit divide gives it; below zero
- * the floor is -q - 1 (~q in the low word) unless the division is exact
- * (#17: a 64-bit library divide before; rt_texture's code 544 bytes
- * smaller on the an385). */
+ * The magnitude fits 32 bits, so one 32-bit divide gives it, not a
+ * 64-bit library divide; below zero the floor is -q - 1 (~q in the low
+ * word) unless the division is exact. */
 static inline uint64_t floor_div_far(fx_t p, fx_t a, fx_t d)
 {
     const uint32_t w = (uint32_t)p - (uint32_t)a; /* p - a mod 2^32 */
@@ -39,9 +38,8 @@ static inline int far_apart(fx_t p, fx_t a)
 
 /* Low word of the cell index of p - a along one axis for cells of size
  * m->tex_scale, floor((p - a) / size), for a difference that fits int32
- * (not far_apart): the texel needs only the parity of the sum (#17:
- * rt_texel 61 -> 42 instructions a call on the M3, 129 -> 108 on the
- * M0). */
+ * (not far_apart): the texel needs only the parity of the sum, so a
+ * 32-bit word of it will do. */
 static inline uint32_t cell(const rt_material *m, fx_t p, fx_t a)
 {
     fx_t rem;
@@ -58,10 +56,8 @@ static inline uint32_t cell_any(const rt_material *m, fx_t p, fx_t a)
 }
 
 /* rt_texel where some difference overflows int32 (points over 32,768
- * units from o->a), out of line: the common case then keeps nothing
- * across a call (#17: rt_texel 41.6 -> 40.8 instructions a call on the
- * M3, 104.8 -> 97.6 on the M0). */
-static RT_COLD unsigned texel_far(const rt_material *m, const rt_object *o,
+ * units from o->a). */
+static unsigned texel_far(const rt_material *m, const rt_object *o,
                                   const fx_vec3 *p)
 {
     uint32_t idx = cell_any(m, p->x, o->a.x) + cell_any(m, p->z, o->a.z);
@@ -136,31 +132,26 @@ static inline uint32_t lattice_k(uint32_t pt, uint32_t seed)
  * turns into another path (docs/stability-cases.md). */
 #define NOISE_BITS 30
 
-/* lo + s (hi - lo), s in [0, 1]: within [lo, hi], so the sum fits. Where
- * the product is soft (FX_SOFT_MUL64), s taken unsigned picks the column
- * form of fx_iumul64 (#17: a bumped hit 36 instructions cheaper on the
- * M0); the signed form is the one multiply elsewhere. */
+/* lo + s (hi - lo), s in [0, 1]: within [lo, hi], so the sum fits; s
+ * is taken unsigned, as it is. */
 static int32_t lerp(int32_t lo, int32_t hi, int32_t s)
 {
     const int64_t half = (int64_t)1 << (NOISE_BITS - 1);
     /* hi - lo fits 32 bits: both are in [-1, 1). */
-    const int64_t p = FX_SOFT_MUL64 ? fx_iumul64(hi - lo, (uint32_t)s)
-                                    : fx_imul64(s, hi - lo);
+    const int64_t p = fx_iumul64(hi - lo, (uint32_t)s);
     return lo + (int32_t)((p + half) >> NOISE_BITS);
 }
 
 /* lerp of the lattice values of k0 and k1: with hi - lo = dk 2^14, the
- * step is floor((s dk + 2^15) / 2^16), |s dk| < 2^47. Without a 32x32->64
- * multiply (FX_SOFT_MUL64) s = sh 2^16 + sl and dk = dh 2^16 + dl (dl and
- * sl unsigned, dh in [-2, 1]) give sh dk + sl dh + floor((sl dl + 2^15) /
- * 2^16) from three 32-bit products; the sum is formed unsigned, which
- * wraps by definition, and the step fits int32 (#17). */
+ * step is floor((s dk + 2^15) / 2^16), |s dk| < 2^47: with s = sh 2^16 +
+ * sl and dk = dh 2^16 + dl (dl and sl unsigned, dh in [-2, 1]), sh dk +
+ * sl dh + floor((sl dl + 2^15) / 2^16) from three 32-bit products; the
+ * sum is formed unsigned, which wraps by definition, and the step fits
+ * int32. */
 static inline int32_t lerp_k(uint32_t k0, uint32_t k1, int32_t s)
 {
     const int32_t lo = ((int32_t)k0 - FX_ONE) * (1 << 14);
     const int32_t dk = (int32_t)k1 - (int32_t)k0;
-    if (!FX_SOFT_MUL64)
-        return lo + (int32_t)((fx_imul64(s, dk) + 0x8000) >> 16);
     const uint32_t sl = (uint32_t)s & 0xFFFFu, dl = (uint32_t)dk & 0xFFFFu;
     const uint32_t step = (uint32_t)((s >> 16) * dk) +
                           (uint32_t)((int32_t)sl * (dk >> 16)) +
@@ -179,8 +170,8 @@ static int32_t smooth(int32_t f)
 
 /* The lerp along x of seed's values at the corners x0 ^ yz and x1 ^ yz
  * (the hash terms of two corners that differ in x only). noise3 writes
- * its four out rather than loop over them (#17: a bumped hit 40
- * instructions cheaper on the M3, 112 on the M0). */
+ * its four out rather than loop over them: the hash terms stay in
+ * registers. */
 static inline int32_t edge(uint32_t x0, uint32_t x1, uint32_t yz,
                            uint32_t seed, int32_t s)
 {
@@ -190,8 +181,7 @@ static inline int32_t edge(uint32_t x0, uint32_t x1, uint32_t yz,
 /* Trilinear value noise of seeds 1, 2 and 3 in lattice cell i
  * (coordinates modulo 2^32, as the hash takes them) at fractions s, with
  * NOISE_BITS fraction bits; the corners' terms of the hash are formed
- * once for the three (#17: with lerp_k, rt_bump's own code 830 -> 630
- * instructions a call on the M3, 2,410 -> 1,780 on the M0). */
+ * once for the three. */
 static void noise3(const uint32_t i[3], const int32_t s[3], int32_t g[3])
 {
     const uint32_t x0 = i[0] * 73856093u, y0 = i[1] * 19349663u,
@@ -209,18 +199,13 @@ static void noise3(const uint32_t i[3], const int32_t s[3], int32_t g[3])
 }
 
 /* One 15-bit digit of a quotient by d <= 2^17: q = floor(x / d) for x
- * < 2^32, its remainder to *r. Where the core has no divide instruction
- * (FX_SOFT_MUL64), floor(x rcp / 2^32) with rcp = fx_floor_rcp(d) is
- * never above q and at most 2 below it (rcp > (2^32 - 1) / d - 1), and
- * the remainder, below 3d, corrects it. */
+ * < 2^32, its remainder to *r, with no divide (a library call on a core
+ * without one): floor(x rcp / 2^32) with rcp = fx_floor_rcp(d) is never
+ * above q and at most 2 below it (rcp > (2^32 - 1) / d - 1), and the
+ * remainder, below 3d, corrects it. */
 static inline uint32_t frac_digit(uint32_t x, uint32_t d, uint32_t rcp,
                                   uint32_t *r)
 {
-    if (!FX_SOFT_MUL64) {
-        uint32_t q = x / d;
-        *r = x - q * d;
-        return q;
-    }
     uint32_t q = fx_umulhi32(x, rcp), rr = x - q * d;
     while (rr >= d) {
         q++;
@@ -234,9 +219,8 @@ static inline uint32_t frac_digit(uint32_t x, uint32_t d, uint32_t rcp,
  * fraction within it, rem / size, with NOISE_BITS fraction bits, rounded
  * down (rem < size, so the quotient is below 2^NOISE_BITS), smoothed.
  * For a size up to 2 units (2^17) the fraction is two 15-bit digits,
- * each r 2^15 < size 2^15 <= 2^32 (#17: a bumped hit 93 instructions
- * cheaper on the M3, 300 on the M0). The cell is formed as in cell (#17:
- * 31 instructions fewer a bumped hit on the M0). */
+ * each r 2^15 < size 2^15 <= 2^32, not a 64-bit divide. The cell is
+ * formed as in cell. */
 static inline void lattice_axis(const rt_material *m, fx_t p, fx_t a,
                                 uint32_t *i, int32_t *s)
 {

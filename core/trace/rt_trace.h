@@ -33,6 +33,14 @@ typedef struct {
     rt_dir_grids grids; /* what shadow and secondary rays may hit */
 } rt_tracer;
 
+/* Called on each hit the tracer shades, when set (rt_work.on_hit):
+ * object oi of scene s, met at distance t along r by a ray of weight w
+ * (FX_ONE for a camera ray). ctx is the installer's; the tracer does not
+ * know what the hook is for (a draft render tells its pixels apart by
+ * their hits, rt_draft.c). */
+typedef void (*rt_hit_hook)(void *ctx, const rt_scene *s, unsigned oi,
+                            const rt_ray *r, fx_t t, fx_t w);
+
 typedef struct {
     rt_stats *stats; /* may be NULL */
     /* The current sample's allowance for untraced colour (Q32.32): a ray
@@ -40,9 +48,8 @@ typedef struct {
      * then taken off (rt_cutoff.h). */
     uint32_t budget;
     uint16_t blocker[RT_MAX_LIGHTS]; /* per light: what last blocked it */
-    uint8_t sign;  /* 1: each hit is folded into sig (a draft render) */
-    uint32_t sig;  /* the current sample's hits (rt_draft_sign_hit) */
-    fx_t sign_w;   /* rays of this weight or less are not signed */
+    rt_hit_hook on_hit; /* NULL: none */
+    void *hit_ctx;      /* on_hit's context */
 } rt_work;
 
 /* Sets up *tr for rendering scene s (valid: rt_render_rows checks it)
@@ -50,7 +57,7 @@ typedef struct {
  * bounds, the sealed glass and the direction grids. */
 void rt_tracer_init(rt_tracer *tr, const rt_scene *s, const rt_options *o);
 
-/* Empty work: no blockers known, a budget of 0, no signing. */
+/* Empty work: no blockers known, a budget of 0, no hook. */
 void rt_work_init(rt_work *wk, rt_stats *stats);
 
 /* Adds one to a counter of wk's rt_stats, if counting (RT_STATS). */
@@ -92,12 +99,5 @@ int rt_probe_camera(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
  * two give rt_trace_camera's colour. */
 rt_rgb rt_shade_camera(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
                        const rt_hit *h);
-
-/* Folds the hit at distance t along r on object oi, of a ray of weight w,
- * into wk->sig: the object and, if its material has a texture, the cell
- * (rt_draft.c); hits too faint to matter are left out. The tracer calls it
- * only when wk->sign is set. */
-void rt_draft_sign_hit(rt_work *wk, const rt_scene *s, unsigned oi,
-                       const rt_ray *r, fx_t t, fx_t w);
 
 #endif /* RT_TRACE_H */

@@ -44,9 +44,8 @@ void rt_work_init(rt_work *wk, rt_stats *stats)
 {
     wk->stats = stats;
     wk->budget = 0;
-    wk->sign = 0;
-    wk->sig = 0;
-    wk->sign_w = FX_ONE;
+    wk->on_hit = 0;
+    wk->hit_ctx = 0;
     for (unsigned i = 0; i < RT_MAX_LIGHTS; i++)
         wk->blocker[i] = RT_NO_OBJECT;
 }
