@@ -4,8 +4,8 @@
  * header).
  *
  * Both work on magnitudes, so rounding is symmetric (ties away from zero),
- * and use only 32-bit divides: a 64-bit divide is a libgcc call of 70 to
- * 500 instructions on Cortex-M, a 32-bit one a single instruction on M3.
+ * and use only 32-bit divides: a 64-bit divide is a long libgcc call on
+ * Cortex-M, a 32-bit one a single instruction on the M3.
  * Every quotient digit is corrected against its exact remainder, so the
  * result is the correctly rounded quotient, the same on every target.
  */
@@ -93,7 +93,7 @@ const uint8_t fx_ctz_table[32] = {
 /* Out of line the products are summed by columns instead: ah bl
  * plus the top of al bl, then al bh plus the low half of that, each
  * below 2^32, so no carry is needed and no 64-bit register pair ties the
- * allocation: 26 instructions a call on the M0 instead of 31. Inline,
+ * allocation, which makes the call shorter on the M0. Inline,
  * among the caller's values, the pairs of fx_imul64_soft do better. */
 int64_t fx_imul64_call(int32_t a, int32_t b)
 {
@@ -134,8 +134,8 @@ uint32_t fx_udiv64_32(uint64_t n, uint32_t d)
     uint32_t un10 = u0 << s, un1 = un10 >> 16, un0 = un10 & 0xFFFF;
     uint32_t q1, rhat, rc = 0;
     if (FX_SOFT_DIV) {
-        /* No divide instruction (ARMv6-M): a 32-bit divide is a library
-         * call of about 80 instructions. Instead rc ~ 2^31 / vn1 (at
+        /* No divide instruction (ARMv6-M): a 32-bit divide is a long
+         * library call. Instead rc ~ 2^31 / vn1 (at
          * most 2^16) by one Newton step, r0 (2 - vn1 r0 / 2^30), from
          * the seed r0 ~ 2^30 / vn1 that fx_rsqrt_tab holds for vn1^2
          * (|e| < 2^22): never above 2^31 / vn1 and at most 2^-14.9 below

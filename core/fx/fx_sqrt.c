@@ -98,7 +98,7 @@ static inline uint32_t sqrtrem64(uint32_t hi, uint32_t lo, uint64_t *rem)
     uint32_t r1, s1, n, q, u;
     if (FX_SOFT_DIV) {
         /* ARMv6-M has no divide instruction either: a 32-bit divide is a
-         * library call of about 80 instructions there. So both divides
+         * long library call there. So both divides
          * come from R = fx_rsqrt_q29(hi) ~ 2^45 / sqrt(hi), at most 2^-20
          * below it. hi R / 2^45 is then within 2^-4 below sqrt(hi)
          * < 2^16, and without the product of the low halves and with the
