@@ -175,7 +175,24 @@ static inline uint64_t fx_len2_raw(int32_t ax, int32_t ay, int32_t az)
 static inline int32_t fx_d3_unit_err(fx_dir3 d)
 {
     /* The value fits an int32, and 2^(2 FX_UBITS) is a multiple of the
-     * divisor: it is bits 2 FX_UBITS - 32 and up of |d|^2, mod 2^32. */
+     * divisor: it is bits 2 FX_UBITS - 32 and up of |d|^2, mod 2^32.
+     * For FX_UBITS = 30 on the M0, from the halves of fx_len2_raw: |d|^2
+     * = hh 2^32 + mm 2^17 + ll, so the bits are 16 hh + floor((mm +
+     * floor(ll / 2^17)) / 2^11): |ch cl| <= (|c| + 2^15) / 2 keeps mm
+     * and the sum within an int32 while |d.x| + |d.y| + |d.z| < 2^32 -
+     * 2^17, as for any unit vector, and no 64-bit value is formed. */
+    if (FX_SOFT_MUL64 && FX_UBITS == 30) {
+        const int32_t xh = fx_hi_bal(d.x), xl = (int16_t)d.x;
+        const int32_t yh = fx_hi_bal(d.y), yl = (int16_t)d.y;
+        const int32_t zh = fx_hi_bal(d.z), zl = (int16_t)d.z;
+        const uint32_t hh = (uint32_t)(xh * xh) + (uint32_t)(yh * yh) +
+                            (uint32_t)(zh * zh);
+        const uint32_t ll = (uint32_t)(xl * xl) + (uint32_t)(yl * yl) +
+                            (uint32_t)(zl * zl);
+        const int32_t mm = xh * xl + yh * yl + zh * zl;
+        return (int32_t)(hh * 16u +
+                         (uint32_t)((mm + (int32_t)(ll >> 17)) >> 11));
+    }
     return (int32_t)(uint32_t)(fx_len2_raw(d.x, d.y, d.z) >>
                                (2 * FX_UBITS - 32));
 }

@@ -87,7 +87,14 @@ static inline uint32_t fx_rsqrt_q30(uint32_t m, int32_t r)
                      fx_umulhi32(m, (uint32_t)r2);
         e8 = (uint32_t)((0u - p) >> 8);
     }
-    return 2 * ur + (fx_umulhi32(ur, e8) >> 18);
+    if (!FX_SOFT_MUL64)
+        return 2 * ur + (fx_umulhi32(ur, e8) >> 18);
+    /* floor(ur e8 / 2^50) by columns as fx_umulhi32: with ur <= 2^30 and
+     * e8 <= 2^31, t = uh el + ul eh + floor(ul el / 2^16) stays below
+     * 2^32 with no carry to keep. */
+    uint32_t eh = e8 >> 16, el = e8 & 0xFFFFu;
+    uint32_t t = uh * el + ul * eh + ((ul * el) >> 16);
+    return 2 * ur + ((uh * eh + (t >> 16)) >> 18);
 }
 
 #endif /* FX_RSQRT_H */
