@@ -103,9 +103,9 @@ static int64_t shift_round(int64_t v, int n)
     return (v + ((int64_t)1 << (n - 1))) >> n;
 }
 
-/* shift_round for the rare paths (thin_side, upright_thin): one function,
- * which the compiler need not copy into each of them. */
-static int64_t shift_round_cold(int64_t v, int n)
+/* shift_round out of line, for the rare paths (thin_side, upright_thin),
+ * where each inlined copy of its variable 64-bit shifts costs flash. */
+RT_COLD static int64_t shift_round_cold(int64_t v, int n)
 {
     return shift_round(v, n);
 }
@@ -156,8 +156,9 @@ static int64_t frame_div(int64_t n, int64_t d)
  * a cone's apex. `real`: the roots are known to be real (a ray steeper
  * than a cone's side meets both nappes), so any negative discriminant is
  * rounding. */
-static inline int quadratic(int64_t a, int64_t b, int64_t c, int real,
-                            int64_t root[2])
+RT_ALWAYS_INLINE static inline int quadratic(int64_t a, int64_t b,
+                                             int64_t c, int real,
+                                             int64_t root[2])
 {
     /* A common scale brings the coefficients within 30 bits (only a
      * flat cone's need it); the roots do not change. A range test first,
@@ -236,8 +237,9 @@ static void frame_set_wide(upright_frame *f, const rt_object *o,
 }
 
 /* Sets *f for object o and ray r, whose bounding-sphere tca is given. */
-static inline void frame_set(upright_frame *f, const rt_object *o,
-                             const rt_ray *r, int64_t tca)
+RT_ALWAYS_INLINE static inline void frame_set(upright_frame *f,
+                                              const rt_object *o,
+                                              const rt_ray *r, int64_t tca)
 {
     const int sf = RT_FRAME_BITS - 16 - o->ushift;
     f->sf = sf;
@@ -384,10 +386,11 @@ static int thin_side(const rt_object *o, const rt_ray *r, int64_t tca,
  * base, bottom, and at the top, a cylinder's only) nearer than *best: 1
  * with *best and *part (1 + cap) set for a hit. ur is the radius in the
  * frame. */
-static inline int upright_caps(const rt_object *o, const rt_ray *r,
-                               int64_t tca, const upright_frame *f,
-                               int32_t ur, fx_t tmin, fx_t *best,
-                               uint16_t *part)
+RT_ALWAYS_INLINE static inline int upright_caps(const rt_object *o,
+                                                const rt_ray *r, int64_t tca,
+                                                const upright_frame *f,
+                                                int32_t ur, fx_t tmin,
+                                                fx_t *best, uint16_t *part)
 {
     const int sf = f->sf;
     const int64_t rim = (int64_t)RT_RIM_SLACK << (sf > 0 ? sf : 0);
@@ -432,7 +435,7 @@ static inline int upright_caps(const rt_object *o, const rt_ray *r,
  * the cone is thin: the side's hit is thin_side's, and the caps are
  * tested again against it; or, if thin_side declines, the answer found
  * (with *t and *part) stands. f is upright_hit's frame for the ray. */
-static int upright_thin(const rt_object *o, const rt_ray *r,
+RT_COLD static int upright_thin(const rt_object *o, const rt_ray *r,
                                 int64_t tca, const upright_frame *f,
                                 int64_t s0, fx_t tmin, fx_t tmax, int found,
                                 fx_t *t, uint16_t *part)
