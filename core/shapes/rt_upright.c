@@ -190,10 +190,11 @@ static int thin_side(const rt_object *o, const rt_ray *r, int64_t tca,
  * base, bottom, and at the top, a cylinder's only) nearer than *best: 1
  * with *best and *part (1 + cap) set for a hit. ur is the radius in the
  * frame. */
-static inline int upright_caps(const rt_object *o, const rt_ray *r,
-                               int64_t tca, const upright_frame *f,
-                               int32_t ur, fx_t tmin, fx_t *best,
-                               uint16_t *part)
+RT_ALWAYS_INLINE static inline int upright_caps(const rt_object *o,
+                                                const rt_ray *r, int64_t tca,
+                                                const upright_frame *f,
+                                                int32_t ur, fx_t tmin,
+                                                fx_t *best, uint16_t *part)
 {
     const int sf = f->sf;
     const int64_t rim = (int64_t)RT_RIM_SLACK << (sf > 0 ? sf : 0);
@@ -238,7 +239,7 @@ static inline int upright_caps(const rt_object *o, const rt_ray *r,
  * the cone is thin: the side's hit is thin_side's, and the caps are
  * tested again against it; or, if thin_side declines, the answer found
  * (with *t and *part) stands. f is upright_hit's frame for the ray. */
-static int upright_thin(const rt_object *o, const rt_ray *r,
+RT_COLD static int upright_thin(const rt_object *o, const rt_ray *r,
                                 int64_t tca, const upright_frame *f,
                                 int64_t s0, fx_t tmin, fx_t tmax, int found,
                                 fx_t *t, uint16_t *part)

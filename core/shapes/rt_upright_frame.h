@@ -37,9 +37,9 @@ static int64_t shift_round(int64_t v, int n)
     return (v + ((int64_t)1 << (n - 1))) >> n;
 }
 
-/* shift_round for the rare paths (thin_side, upright_thin): one function,
- * which the compiler need not copy into each of them. */
-static int64_t shift_round_cold(int64_t v, int n)
+/* shift_round out of line, for the rare paths (thin_side, upright_thin),
+ * where each inlined copy of its variable 64-bit shifts costs flash. */
+RT_COLD static int64_t shift_round_cold(int64_t v, int n)
 {
     return shift_round(v, n);
 }
@@ -90,8 +90,9 @@ static int64_t frame_div(int64_t n, int64_t d)
  * a cone's apex. `real`: the roots are known to be real (a ray steeper
  * than a cone's side meets both nappes), so any negative discriminant is
  * rounding. */
-static inline int quadratic(int64_t a, int64_t b, int64_t c, int real,
-                            int64_t root[2])
+RT_ALWAYS_INLINE static inline int quadratic(int64_t a, int64_t b,
+                                             int64_t c, int real,
+                                             int64_t root[2])
 {
     /* A common scale brings the coefficients within 30 bits (only a
      * flat cone's need it); the roots do not change. A range test first,
@@ -170,8 +171,9 @@ static void frame_set_wide(upright_frame *f, const rt_object *o,
 }
 
 /* Sets *f for object o and ray r, whose bounding-sphere tca is given. */
-static inline void frame_set(upright_frame *f, const rt_object *o,
-                             const rt_ray *r, int64_t tca)
+RT_ALWAYS_INLINE static inline void frame_set(upright_frame *f,
+                                              const rt_object *o,
+                                              const rt_ray *r, int64_t tca)
 {
     const int sf = RT_FRAME_BITS - 16 - o->ushift;
     f->sf = sf;
