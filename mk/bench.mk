@@ -79,3 +79,10 @@ bench:
 # (tools/stack_table.sh; STACK_JOBS=n builds at once, default 2).
 stack:
 	$(Q)MAKE="$(MAKE)" bash tools/stack_table.sh
+
+# make variant-gains: what each kernel variant and piece of compiler
+# steering kept in core/ saves (tools/variant_gains.sh, the list in
+# tools/variants.txt), written to docs/variants.md.
+.PHONY: variant-gains
+variant-gains:
+	$(Q)bash tools/variant_gains.sh
