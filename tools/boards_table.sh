@@ -93,7 +93,7 @@ section() {
     fi
     nobj=$("$FT" --emit-c "$SEED" | sed -nE 's/^#define FW_SCENE_OBJECTS ([0-9]+).*/\1/p')
     depth=$(awk '/^image /{for (i = 1; i < NF; i++) if ($i == "depth") print $(i + 1)}' "$SEED")
-    parser=$(mapsum build/boards/an385-text/fixtrace.map 'core/rt_(parse|lex)[a-z_]*\.o$')
+    parser=$(mapsum build/boards/an385-text/fixtrace.map 'core/parse/rt_(parse|lex)[a-z_]*\.o$')
     tables=$(mapsum build/boards/an385-tables/fixtrace.map 'scene_tables\.o$')
     text=$(wc -c <"$SEED" | tr -d ' ')
     row=$(symsize build/boards/an385-text/fixtrace.elf arm-none-eabi-nm row_buf)
@@ -130,7 +130,7 @@ Flash here is \`.text + .rodata\`, as \`make size\` prints them (it also
 prints \`.ARM.exidx\` and the initial \`.data\`, which flash holds too: at
 most $more bytes more here; on rv32 the whole image sits in RAM). On the
 M3 the text build carries the parser
-($(th "$parser") bytes of \`core/rt_parse*.c\` and \`core/rt_lex*.c\` in the link map)
+($(th "$parser") bytes of \`core/parse/\` in the link map)
 and the seed's text ($(th "$text") bytes); the tables build carries neither,
 but $(th "$tables") bytes of tables, and leaves out multiple lights and
 supersampling, which the seed does not use. RAM on the large boards is a
