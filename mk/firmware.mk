@@ -22,7 +22,7 @@
 #   parse fails the build with the parser's file:line:col message;
 # - `fixtrace --emit-c` writes the parsed scene as constant tables,
 #   build/<b>/scene_tables.c, which the image carries instead of the text:
-#   no parser (core/rt_parse*.c, core/rt_lex*.c) and no scene text are
+#   no parser (core/parse/) and no scene text are
 #   linked;
 # - `fixtrace --build-flags` derives the RT_NO_* flags that remove every
 #   effect the scene does not need at the SPP the firmware renders;
@@ -306,10 +306,9 @@ $(FW_BUILD)/core/%.o: core/%.c $(FW_FLAGS_STAMP) $(FW_EFFECTS)
 
 # The core's set-up code runs once a render, before the first pixel (the
 # tracer's tables, the direction grids, the cut-off bounds, the scene's
-# derived fields), and the row culling once a row: compiled for size, they
-# leave flash for the per-pixel code, which -O2 makes faster, at no
-# measurable cost per pixel on any board (docs/architecture.md gives the
-# figures). One list for every CPU. FW_COLD_OPT is empty where FW_OPT is
+# checks), and the row culling once a row: compiled for size, they leave
+# flash for the per-pixel code, which -O2 makes faster, at no measurable
+# cost per pixel on any board (docs/variants.md gives the figures). One list for every CPU. FW_COLD_OPT is empty where FW_OPT is
 # -Os.
 FW_COLD_SRC := rt_tracer rt_dirgrid rt_cutoff rt_sealed rt_scene rt_features \
     fx_trig fx_vec rt_cull
