@@ -36,7 +36,7 @@ typedef struct {
     uint8_t from[RT_MAX_OBJECTS];   /* rays leaving object i: grid */
     uint8_t mirror[RT_MAX_OBJECTS]; /* eye rays mirrored off plane i */
     uint8_t near; /* every object small, bc and br within 2^22: the
-                     16-bit rt_passes_by path (rt_miss_cross_near) */
+                     narrow form of rt_passes_by (fx_cross_beyond) */
     fx_vec3 eye;                    /* the eye those grids are for */
     rt_dir_grid grid[RT_DIR_MAX_GRIDS];
     uint32_t pool[RT_DIR_POOL_WORDS];

@@ -242,4 +242,27 @@ static inline uint32_t fx_sqrt_round(uint64_t n)
     return s + (rem > s);
 }
 
+/* 1 if c = a p - b q (|a|, |b| < 2^30, p and q unit components) is surely
+ * beyond +-(r + 4) 2^FX_UBITS, for 0 <= r < 2^29: a bound sure enough to
+ * reject a sphere of radius r whose centre is offset (a, b) from a ray.
+ * fx_cross_hi gives c 2^-32 to within 2, taken against +-(k + 2), k 2^32
+ * >= (r + 5) 2^30. narrow: |a|, |b| < 2^23 and r < 2^22, where a CPU
+ * without a 64-bit multiply takes c as C 2^24, C = (a >> 8) (p >> 16) -
+ * (b >> 8) (q >> 16), one 32-bit product a term: |c - C 2^24| < 98308
+ * 2^24, so |C| >= (floor(r / 32) + 50) 2^11 > 64 r + 98563 makes |c| >
+ * (r + 4) 2^30 as well (a looser, still sure bound). */
+static inline int fx_cross_beyond(int32_t a, int32_t p, int32_t b, int32_t q,
+                                  fx_t r, int narrow)
+{
+    if (FX_SOFT_MUL64 && narrow) {
+        const int32_t c = (a >> 8) * (p >> 16) - (b >> 8) * (q >> 16);
+        const uint32_t t = ((uint32_t)r >> 5) + 50u;
+        /* C >= k or C <= -k - 1: C + k >= 2k, unsigned. */
+        return ((uint32_t)c + (t << 11)) >> 12 >= t;
+    }
+    const uint32_t k1 = ((uint32_t)r >> 2) + 3u; /* k + 1 */
+    /* ch >= k + 2 or ch <= -k - 2, in one unsigned compare. */
+    return (uint32_t)fx_cross_hi(a, p, b, q) + k1 > 2u * k1;
+}
+
 #endif /* FX_DOT_H */
