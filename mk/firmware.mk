@@ -308,7 +308,7 @@ $(FW_BUILD)/core/%.o: core/%.c $(FW_FLAGS_STAMP) $(FW_EFFECTS)
 # tracer's tables, the direction grids, the cut-off bounds, the scene's
 # checks), and the row culling once a row: compiled for size, they leave
 # flash for the per-pixel code, which -O2 makes faster, at no measurable
-# cost per pixel on any board (docs/variants.md gives the figures). One list for every CPU. FW_COLD_OPT is empty where FW_OPT is
+# cost per pixel on any board (make variant-gains measures it). One list for every CPU. FW_COLD_OPT is empty where FW_OPT is
 # -Os.
 FW_COLD_SRC := rt_tracer rt_dirgrid rt_cutoff rt_sealed rt_scene rt_features \
     fx_trig fx_vec rt_cull
