@@ -31,7 +31,12 @@ CORE_WARN := $(WARN) -Wconversion -Wno-sign-conversion
 # The core's layer folders, lowest first (docs/architecture.md). Every
 # file includes its headers by name; CORE_INC puts every folder on the path.
 CORE_DIRS := core/fx core/scene core/shapes core/parse core/accel core/trace core/frame
-CORE_SRC := $(sort $(wildcard $(addsuffix /*.c,$(CORE_DIRS))))
+# The shapes' files that their dispatch unit, core/shapes/rt_shape.c,
+# includes (its comment says why): compiled there, not on their own.
+CORE_INCLUDED := $(addprefix core/shapes/,rt_sphere.c rt_quad.c rt_box.c \
+    rt_upright.c)
+CORE_SRC := $(filter-out $(CORE_INCLUDED),\
+    $(sort $(wildcard $(addsuffix /*.c,$(CORE_DIRS)))))
 CORE_HDR := $(sort $(wildcard $(addsuffix /*.h,$(CORE_DIRS))))
 CORE_INC := $(addprefix -I,$(CORE_DIRS))
 export CORE_INC

@@ -81,6 +81,7 @@ $(WEB_OBJ_DIR)/port/posix/%.o: port/posix/%.c $(WASM_STAMP) | web-check-tools
 
 $(WASM): $(WASM_OBJ) $(WASM_STAMP)
 	@$(if $(Q),echo "  LD      $@")
+	$(Q)mkdir -p $(@D)
 	$(Q)$(WASM_LD) $(WASM_LDFLAGS) $(WASM_OBJ) -o $@.tmp && mv -f $@.tmp $@
 
 $(WEB_BUILD)/%: port/wasm/web/%

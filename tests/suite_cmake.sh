@@ -99,7 +99,7 @@ if cmake -S "$SRC" -B "$tmp/lib" >"$tmp/lib.log" 2>&1 &&
     done
     [ -z "$missing" ] && ok || bad "the install lacks:$missing"
     extra=$(cd "$prefix" && ls include/fixtrace | grep -vxE \
-        'fixtrace_version.h|fx_cpu.h|fx_cpu_armv6m.h|fx_cpu_mul64.h|fx_cpu_rv32.h|fx_dir.h|fx_dot.h|fx_math.h|fx_mul64_soft.h|fx_vec.h|rt_config.h|rt_features.h|rt_grey.h|rt_mesh.h|rt_options.h|rt_panel.h|rt_parse.h|rt_ray.h|rt_render.h|rt_scene.h')
+        'fixtrace_version.h|fx_cpu.h|fx_cpu_armv6m.h|fx_cpu_mul64.h|fx_cpu_rv32.h|fx_dir.h|fx_dot.h|fx_math.h|fx_mul64_soft.h|fx_rsqrt.h|fx_vec.h|rt_config.h|rt_features.h|rt_grey.h|rt_mesh.h|rt_options.h|rt_panel.h|rt_parse.h|rt_ray.h|rt_render.h|rt_scene.h')
     [ -z "$extra" ] && ok || bad "the install has internal headers: $extra"
     [ ! -e "$prefix/include/rt_render.h" ] && ok ||
         bad "headers installed straight into include/"

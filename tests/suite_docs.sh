@@ -319,7 +319,7 @@ int main(int argc, char **argv)
 }
 EOF
 # shellcheck disable=SC2046
-if $CC -std=c99 -O1 $CORE_INC -Idocs/examples "$tmp/fake_tiles.c" \
+if $CC -std=c99 -O1 $CORE_INC $PKG_INC -Idocs/examples "$tmp/fake_tiles.c" \
     core/*/*.c -o "$tmp/fake_tiles" 2>"$tmp/err"; then
     if "$tmp/fake_tiles" "$tmp/tiles.scene" "$tmp/tiles.ppm" \
         "$tmp/dirty.ppm" 2>"$tmp/err" &&
@@ -372,7 +372,7 @@ int main(int argc, char **argv)
 }
 EOF
 # shellcheck disable=SC2046
-if $CC -std=c99 -O1 $CORE_INC -Idocs/examples "$tmp/fake_oled.c" \
+if $CC -std=c99 -O1 $CORE_INC $PKG_INC -Idocs/examples "$tmp/fake_oled.c" \
     core/*/*.c -o "$tmp/fake_oled" 2>"$tmp/err"; then
     if "$tmp/fake_oled" "$tmp/oled.scene" "$tmp/oled.raw" 2>"$tmp/err" &&
         "$FT" -q --format mono-page --dither diffusion -W 128 -H 64 \

@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* Renders a scene to a 128x64 SSD1306 OLED (1 bit a pixel), page by
  * page, with error-diffusion dithering; no frame buffer. */
-#include "rt_panel.h"
-#include "rt_parse.h"
-#include "rt_render.h"
+#include <fixtrace/rt_panel.h>
+#include <fixtrace/rt_parse.h>
+#include <fixtrace/rt_render.h>
 
 #define OLED_W 128
 #define OLED_H 64

@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Renders a scene to a 320x240 SPI display in tiles, each sent by DMA
  * while the next is rendered; redraws a dirty rectangle the same way. */
-#include "rt_parse.h"
-#include "rt_render.h"
+#include <fixtrace/rt_parse.h>
+#include <fixtrace/rt_render.h>
 
 #define LCD_W 320
 #define LCD_H 240
