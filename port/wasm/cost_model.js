@@ -17,19 +17,19 @@ const COST_MODEL = {
  ],
  "m3": [
   0.0,
-  85.8861,
-  912.3975,
-  255.0493,
-  2017.0448,
-  55.4675
+  69.4605,
+  927.3329,
+  289.8905,
+  2065.3157,
+  55.2036
  ],
  "m0": [
   0.0,
-  75.6713,
-  2828.8346,
-  651.3698,
-  5127.5473,
-  140.598
+  22.7744,
+  2891.9408,
+  673.6391,
+  4974.3816,
+  138.4137
  ],
  "fit": [
   "160x120 1 spp",
@@ -40,8 +40,8 @@ const COST_MODEL = {
   "meshes"
  ],
  "fit_max_error_pct": {
-  "m3": 25.4,
-  "m0": 25.9
+  "m3": 26.6,
+  "m0": 26.1
  },
  "bench_size": "320x240 1 spp",
  "bench": [
@@ -56,14 +56,14 @@ const COST_MODEL = {
     "intersection_tests": 66129
    },
    "m3": {
-    "estimate": 675.5,
+    "estimate": 667.7,
     "measured": 530.2,
-    "error_pct": 27.4
+    "error_pct": 25.9
    },
    "m0": {
-    "estimate": 1876.6,
+    "estimate": 1859.3,
     "measured": 1459.4,
-    "error_pct": 28.6
+    "error_pct": 27.4
    }
   },
   {
@@ -74,15 +74,15 @@ const COST_MODEL = {
     "shadow_rays": 216092,
     "reflection_rays": 55269,
     "refraction_rays": 59013,
-    "intersection_tests": 873868
+    "intersection_tests": 873882
    },
    "m3": {
-    "estimate": 5017.7,
+    "estimate": 5102.4,
     "measured": 4721.4,
-    "error_pct": 6.3
+    "error_pct": 8.1
    },
    "m0": {
-    "estimate": 14043.7,
+    "estimate": 14041.9,
     "measured": 13211.3,
     "error_pct": 6.3
    }
@@ -95,17 +95,17 @@ const COST_MODEL = {
     "shadow_rays": 104617,
     "reflection_rays": 11560,
     "refraction_rays": 6823,
-    "intersection_tests": 2645258
+    "intersection_tests": 2646093
    },
    "m3": {
-    "estimate": 3456.8,
+    "estimate": 3461.8,
     "measured": 3303.6,
-    "error_pct": 4.6
+    "error_pct": 4.8
    },
    "m0": {
-    "estimate": 9325.4,
+    "estimate": 9274.5,
     "measured": 8832.3,
-    "error_pct": 5.6
+    "error_pct": 5.0
    }
   },
   {
@@ -116,17 +116,17 @@ const COST_MODEL = {
     "shadow_rays": 49692,
     "reflection_rays": 3797,
     "refraction_rays": 0,
-    "intersection_tests": 123878
+    "intersection_tests": 123879
    },
    "m3": {
-    "estimate": 778.3,
+    "estimate": 772.8,
     "measured": 3231.4,
-    "error_pct": -75.9
+    "error_pct": -76.1
    },
    "m0": {
-    "estimate": 2165.0,
+    "estimate": 2150.5,
     "measured": 9491.9,
-    "error_pct": -77.2
+    "error_pct": -77.3
    }
   },
   {
@@ -137,17 +137,17 @@ const COST_MODEL = {
     "shadow_rays": 223236,
     "reflection_rays": 70847,
     "refraction_rays": 0,
-    "intersection_tests": 857269
+    "intersection_tests": 857288
    },
    "m3": {
-    "estimate": 3592.4,
+    "estimate": 3648.6,
     "measured": 3434.9,
-    "error_pct": 4.6
+    "error_pct": 6.2
    },
    "m0": {
-    "estimate": 10468.6,
+    "estimate": 10595.3,
     "measured": 9996.0,
-    "error_pct": 4.7
+    "error_pct": 6.0
    }
   },
   {
@@ -158,15 +158,15 @@ const COST_MODEL = {
     "shadow_rays": 69352,
     "reflection_rays": 0,
     "refraction_rays": 0,
-    "intersection_tests": 145571
+    "intersection_tests": 145559
    },
    "m3": {
-    "estimate": 1014.9,
+    "estimate": 1011.5,
     "measured": 975.1,
-    "error_pct": 4.1
+    "error_pct": 3.7
    },
    "m0": {
-    "estimate": 2896.7,
+    "estimate": 2896.6,
     "measured": 2740.1,
     "error_pct": 5.7
    }
@@ -179,17 +179,17 @@ const COST_MODEL = {
     "shadow_rays": 70761,
     "reflection_rays": 84531,
     "refraction_rays": 34597,
-    "intersection_tests": 585122
+    "intersection_tests": 585125
    },
    "m3": {
-    "estimate": 2538.5,
+    "estimate": 2593.9,
     "measured": 2555.7,
-    "error_pct": -0.7
+    "error_pct": 1.5
    },
    "m0": {
-    "estimate": 6780.1,
+    "estimate": 6724.2,
     "measured": 6759.3,
-    "error_pct": 0.3
+    "error_pct": -0.5
    }
   },
   {
@@ -203,14 +203,14 @@ const COST_MODEL = {
     "intersection_tests": 101177
    },
    "m3": {
-    "estimate": 746.3,
+    "estimate": 739.1,
     "measured": 890.4,
-    "error_pct": -16.2
+    "error_pct": -17.0
    },
    "m0": {
-    "estimate": 2081.8,
+    "estimate": 2066.6,
     "measured": 2395.8,
-    "error_pct": -13.1
+    "error_pct": -13.7
    }
   }
  ]
