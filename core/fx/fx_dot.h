@@ -43,26 +43,6 @@ RT_NOINLINE static int64_t fx_dot3_wide_soft(int32_t x0, int32_t x1, int32_t x2,
     return (int64_t)(((uint64_t)hh << 32) + ((uint64_t)mid << 16) + ll);
 }
 
-/* (a c + 2^(s-1)) >> s modulo 2^32, for 17 <= s <= 32 and |c| <= 2^30
- * (a unit component), in 32-bit pieces: with a = ah 2^16 + al and c = ch
- * 2^16 + cl (al, cl unsigned), a c = hh 2^32 + (b1 + b2) 2^16 + l; only
- * the terms below 2^k (k = s - 16) are added before the shift, each
- * below 2^31 in magnitude as |ch| <= 2^14, and 2^(s-1) is a multiple of
- * 2^16. Four 16x16 multiplies inline: where the core has no 64-bit
- * multiply (FX_SOFT_MUL64, the M0) not a call (FX_MUL64_CALL) and the
- * 64-bit rounding shift. */
-static inline int32_t fx_mulsh(int32_t a, int32_t c, unsigned s)
-{
-    const unsigned k = s - 16;
-    const int32_t ah = a >> 16, ch = c >> 16;
-    const uint32_t al = (uint32_t)a & 0xFFFFu, cl = (uint32_t)c & 0xFFFFu;
-    const int32_t hh = ah * ch, b1 = ah * (int32_t)cl, b2 = (int32_t)al * ch;
-    const uint32_t lr = ((al * cl) >> 16) + ((1u << (s - 1)) >> 16);
-    const int32_t low = (b1 & (int32_t)((1u << k) - 1)) + b2 + (int32_t)lr;
-    return (int32_t)(((uint32_t)hh << (16 - k)) + (uint32_t)(b1 >> k) +
-                     (uint32_t)(low >> k));
-}
-
 /* One term of fx_dot3_small: x y split at 16 bits with signed low
  * halves, x = xh 2^16 + xl with -2^15 <= xl < 2^15, added to the running
  * sums of the high, the two middle and the low partial products. */
@@ -130,12 +110,12 @@ static inline int64_t fx_pd_dot_exact(fx_vec3 p, fx_dir3 d)
 /* (a c + 2^(s-1)) >> s: a c 2^-s rounded to nearest (ties up), for 1 <= s
  * <= 32, |c| <= 2^30 and a result within int32 (its low 32 bits
  * otherwise). Where 64-bit products are built from 16-bit ones and s >
- * 16, fx_mulsh's four 16x16 products; else the 64-bit product's two words
+ * 16, fx_mul_rsh's four 16x16 products; else the 64-bit product's two words
  * shifted as 32-bit values. */
 static inline int32_t fx_mul_round(int32_t a, int32_t c, unsigned s)
 {
     if (FX_SOFT_MUL64 && s > 16)
-        return fx_mulsh(a, c, s);
+        return fx_mul_rsh(a, c, s);
     const uint64_t u = (uint64_t)fx_imul64(a, c) + ((uint64_t)1 << (s - 1));
     return (int32_t)(((uint32_t)u >> (s - 1) >> 1) |
                      ((uint32_t)(u >> 32) << ((32 - s) & 31)));
