@@ -72,15 +72,7 @@ static uint32_t quad_t(const rt_object *o, const rt_ray *r)
      * flat quad's dist = n.a is exact; a small tilted quad and ray
      * (rt_object.small) have a - o within 32 bits. den = d.n with 2
      * FX_UBITS fraction bits. */
-    int64_t num;
-    if (flat)
-        num = (int64_t)o->dist * FX_UONE - fx_imul64(r->o.y, o->n.y);
-    else if (o->small && r->small)
-        num = fx_imul64(o->a.x - r->o.x, o->n.x) +
-              fx_imul64(o->a.y - r->o.y, o->n.y) +
-              fx_imul64(o->a.z - r->o.z, o->n.z);
-    else
-        num = fx_pd_dot_diff_raw(o->a, r->o, o->n);
+    const int64_t num = rt_quad_num(o, r->o, r->small);
     if ((num < 0) != (den < 0))
         return 0xFFFFFFFFu;
     /* t = num 2^FX_UBITS / den in Q16.16, both of one sign, rounded: a

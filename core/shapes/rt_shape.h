@@ -33,6 +33,24 @@ static inline int rt_passes_by(const rt_object *o, const rt_ray *r,
            fx_cross_beyond(oy, r->d.z, oz, r->d.y, o->br, near);
 }
 
+/* (a - p).n for quad o (corner a, unit normal n), exact, with 16 +
+ * FX_UBITS fraction bits: negative when p lies on the side n points to,
+ * 0 on the plane. small: p is fx_v3_small. A flat quad's dist is n.a
+ * exactly; a small quad and point have a - p within 32 bits. */
+static inline int64_t rt_quad_num(const rt_object *o, fx_vec3 p, int small)
+{
+    if (o->flat)
+        return (int64_t)o->dist * FX_UONE - fx_imul64(p.y, o->n.y);
+    if (o->small && small)
+        return fx_imul64(o->a.x - p.x, o->n.x) +
+               fx_imul64(o->a.y - p.y, o->n.y) +
+               fx_imul64(o->a.z - p.z, o->n.z);
+    return fx_pd_dot_diff_raw(o->a, p, o->n);
+}
+
+/* rt_quad_num out of line, for the shadow rays' culling. */
+int64_t rt_quad_side(const rt_object *o, fx_vec3 p, int small);
+
 /* Outward unit normal of o on the given part where ray r hits it at t.
  * *p is the hit point o + t d, rounded. With precise set (for a hit that
  * casts reflected or refracted rays, whose directions inherit the
