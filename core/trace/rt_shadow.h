@@ -58,7 +58,8 @@ RT_NOINLINE static uint32_t rt_uncrossed_quads(const rt_tracer *tr,
         if (rt_quad_side(&objs[b], r->o, r->small) <= 0)
             m &= ~((uint32_t)1 << b);
     }
-    for (uint32_t q = m & tr->quad_back[li][w]; q; q &= q - 1) {
+    for (uint32_t q = m & tr->quad_sided[li][w] & ~tr->quad_front[li][w]; q;
+         q &= q - 1) {
         const unsigned b = (unsigned)fx_ctz32(q);
         if (rt_quad_side(&objs[b], r->o, r->small) >= 0)
             m &= ~((uint32_t)1 << b);
@@ -71,7 +72,7 @@ RT_NOINLINE static uint32_t rt_uncrossed_quads(const rt_tracer *tr,
 static inline uint32_t rt_uncrossed(const rt_tracer *tr, unsigned li,
                                     unsigned w, uint32_t m, const rt_ray *r)
 {
-    if (!(m & (tr->quad_front[li][w] | tr->quad_back[li][w])))
+    if (!(m & tr->quad_sided[li][w]))
         return m;
     return rt_uncrossed_quads(tr, li, w, m, r);
 }

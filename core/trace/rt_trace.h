@@ -32,11 +32,11 @@ typedef struct {
     uint32_t cut_budget;
     rt_dir_grids grids; /* what shadow and secondary rays may hit */
     /* Per light, bit sets of the quads whose plane the light lies more
-     * than RT_SIDE_MARGIN off, on the side the normal points to (front)
-     * or the other (back): a shadow ray from the light's side cannot
-     * cross the quad (rt_shadow.h). */
+     * than RT_SIDE_MARGIN off (sided), and of those the ones it lies in
+     * front of, on the side the normal points to (front): a shadow ray
+     * from the light's side cannot cross the quad (rt_shadow.h). */
+    uint32_t quad_sided[RT_MAX_LIGHTS][(RT_MAX_OBJECTS + 31) / 32];
     uint32_t quad_front[RT_MAX_LIGHTS][(RT_MAX_OBJECTS + 31) / 32];
-    uint32_t quad_back[RT_MAX_LIGHTS][(RT_MAX_OBJECTS + 31) / 32];
 } rt_tracer;
 
 /* With 16 + FX_UBITS fraction bits: 2^(36 - FX_UBITS) ulps plus 2^-8

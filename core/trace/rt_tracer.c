@@ -41,15 +41,18 @@ void rt_tracer_init(rt_tracer *tr, const rt_scene *s, const rt_options *o)
     for (unsigned li = 0; RT_HAS_QUAD && li < s->n_lights; li++) {
         const fx_vec3 lp = s->light[li].pos;
         for (unsigned i = 0; i < s->n_objects; i++) {
-            if (s->obj[i].kind != RT_QUAD)
+            const rt_object *q = &s->obj[i];
+            /* A floor's own test rejects a ray off its side as soon. */
+            if (q->kind != RT_QUAD ||
+                (q->flat && (q->n.y == FX_UONE || q->n.y == -FX_UONE)))
                 continue;
             /* (a - lp).n: negative with the light in front. */
-            const int64_t num = rt_quad_side(&s->obj[i], lp, fx_v3_small(lp));
+            const int64_t num = rt_quad_side(q, lp, fx_v3_small(lp));
             const uint32_t bit = (uint32_t)1 << (i % 32);
             if (num < -RT_SIDE_MARGIN)
                 tr->quad_front[li][i / 32] |= bit;
-            else if (num > RT_SIDE_MARGIN)
-                tr->quad_back[li][i / 32] |= bit;
+            if (num < -RT_SIDE_MARGIN || num > RT_SIDE_MARGIN)
+                tr->quad_sided[li][i / 32] |= bit;
         }
     }
     rt_sealed_find(&tr->sealed, s, (tr->feat & RT_FEAT_SHADOWS) != 0);
