@@ -92,9 +92,13 @@ static int non_ascii(obj_lex *x, size_t off, size_t n, const char *where)
 {
     for (size_t i = 0; i < n; i++) {
         const unsigned char c = (unsigned char)x->t[off + i];
-        if (c >= 0x80)
-            return obj_fail(x, off + i, 1, "a byte that is not ASCII "
-                            "(0x%02X) in %s", c, where);
+        if (c >= 0x80) {
+            /* By hand: the WebAssembly port's printf has no %X. */
+            const char hex[] = {'0', 'x', "0123456789ABCDEF"[c >> 4],
+                                "0123456789ABCDEF"[c & 15], '\0'};
+            return obj_fail(x, off + i, 1, "a byte that is not ASCII (%s) "
+                            "in %s", hex, where);
+        }
     }
     return 0;
 }
@@ -125,8 +129,12 @@ static int number(obj_lex *x, const char *what, fx_t *out)
         return 0;
     if (non_ascii(x, off, n, "a number"))
         return -1;
-    /* 1e-3 and the like: strtod on a copy, then rounded as Q16.16. */
-    char buf[64];
+    /* 1e-3 and the like: strtod on a copy, then rounded as Q16.16. The
+     * copy, cut at 24 bytes, names the token in messages. */
+    char buf[64], name[28];
+    const size_t nn = n < 24 ? n : 24;
+    memcpy(name, x->t + off, nn);
+    memcpy(name + nn, n > nn ? "..." : "", n > nn ? 4 : 1);
     if (n < sizeof buf) {
         memcpy(buf, x->t + off, n);
         buf[n] = '\0';
@@ -144,12 +152,11 @@ static int number(obj_lex *x, const char *what, fx_t *out)
                 return 0;
             }
             return obj_fail(x, off, n, "'%s' needs numbers within +-32767 "
-                            "(Q16.16); %.*s is out of range", what, (int)n,
-                            buf);
+                            "(Q16.16); %s is out of range", what, name);
         }
     }
-    return obj_fail(x, off, n, "'%s' needs numbers; '%.*s' is not one", what,
-                    (int)(n < 24 ? n : 24), x->t + off);
+    return obj_fail(x, off, n, "'%s' needs numbers; '%s' is not one", what,
+                    name);
 }
 
 /* A growing array of fixed-size elements. */
@@ -453,13 +460,12 @@ rt_mesh *mesh_obj_parse(const char *text, size_t len, const rt_mesh_place *pl,
     x.t = text;
     x.len = len;
     x.err = err;
-    const char *nul = memchr(text, '\0', len);
-    if (nul) {
-        locate(&x, (size_t)(nul - text));
-        obj_fail(&x, (size_t)(nul - text), 1, "a NUL byte: this is not a "
-                 "text OBJ file");
-        return NULL;
-    }
+    for (size_t i = 0; i < len; i++)
+        if (text[i] == '\0') {
+            locate(&x, i);
+            obj_fail(&x, i, 1, "a NUL byte: this is not a text OBJ file");
+            return NULL;
+        }
     size_t next = 0;
     int failed = 0;
     while (next < len && !failed) {
