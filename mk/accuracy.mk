@@ -8,9 +8,10 @@
 #                        of the float32 reference against the double one,
 #                        every scene at many sizes and 1, 4 and 16 spp
 #                        (tools/accuracy_sweep.py): docs/accuracy-sweep.tsv,
-#                        tests/accuracy_ceilings.txt and docs/accuracy.md's
-#                        section on it (ACC_JOBS=n renders n at once,
-#                        default 2)
+#                        docs/accuracy-sweep-depths.tsv (flips by the depth
+#                        where they appear), tests/accuracy_ceilings.txt and
+#                        docs/accuracy.md's section on them (about 5 CPU
+#                        minutes; ACC_JOBS=n renders n at once, default 2)
 #   make softref SR=v [SCENE=... WIDTH=... HEIGHT=... SPP=...]
 #   make softref-qemu SR=v [same]
 #                        the double reference renderer (port/posix/
@@ -40,6 +41,8 @@ ACC_JOBS ?= 2
 accuracy-sweep: $(FIXTRACE)
 	$(Q)FIXTRACE=$(FIXTRACE) nice python3 tools/accuracy_sweep.py \
 	    -j $(ACC_JOBS) measure
+	$(Q)FIXTRACE=$(FIXTRACE) nice python3 tools/accuracy_sweep.py \
+	    -j $(ACC_JOBS) classify
 	$(Q)bash tools/accuracy_report.sh
 
 SR ?= m3-f64

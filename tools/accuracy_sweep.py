@@ -16,6 +16,8 @@ channel (compare's outliers): a decision that went the other way.
   accuracy_sweep.py check [-j N]     the short set (make test): fails when a
                                      scene's fixed render has more flips
                                      than tests/accuracy_ceilings.txt allows
+  accuracy_sweep.py classify [-j N]  the short set's flips by the depth
+                                     where each first appears
 
 FIXTRACE names the binary (default build/posix/fixtrace). Plain python3:
 no numpy.
@@ -32,6 +34,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(__file__), '..'))
 TSV = os.path.join(ROOT, 'docs', 'accuracy-sweep.tsv')
+DEPTHS = os.path.join(ROOT, 'docs', 'accuracy-sweep-depths.tsv')
 CEILINGS = os.path.join(ROOT, 'tests', 'accuracy_ceilings.txt')
 SEED = 39
 N_SIZES = 20
@@ -230,7 +233,7 @@ def report():
     out = []
     w = out.append
     def para(text):
-        w(textwrap.fill(text, 72) + '\n')
+        w(textwrap.fill(text, 72, break_on_hyphens=False) + '\n')
     w('## Over many sizes: flips against float32\n')
     para('Every figure above is taken at one size, and a flip depends on '
          'where the samples fall. So `make accuracy-sweep` '
@@ -288,6 +291,26 @@ def report():
          'tests/suite_sweep.sh renders again in `make test`: a scene with '
          'more flips fails.' %
          (met, total, ', '.join('%dx%d' % gen[i] for i in SHORT)))
+    if os.path.exists(DEPTHS):
+        with open(DEPTHS) as f:
+            drows = [l.rstrip('\n').split('\t') for l in f
+                     if not l.startswith('#')]
+        deepest = max(len(r) for r in drows) - 2
+        para('Which decision: each flip of the short set, by the depth '
+             'where it first appears when the scene is rendered again with '
+             '`-d 0`, `-d 1`, ... (0: on the primary ray: a silhouette, a '
+             'shadow edge or a texture cell where the ray from the eye '
+             'lands; k: k reflections or refractions down). '
+             '`tools/accuracy_sweep.py classify` writes '
+             'docs/accuracy-sweep-depths.tsv.')
+        w('| scene | ' + ' | '.join('depth %d' % d
+                                    for d in range(deepest + 1)) + ' |')
+        w('|---|' + '--:|' * (deepest + 1))
+        for r in drows:
+            w('| %s | ' % r[0] + ' | '.join(
+                r[1 + d] if 1 + d < len(r) else '–'
+                for d in range(deepest + 1)) + ' |')
+        w('')
     w('    make accuracy-sweep                # the sweep, this section, '
       'the ceilings')
     w('    build/posix/fixtrace --reference-float -W 333 -H 250 -o f32.ppm '
@@ -352,6 +375,83 @@ def check(n_jobs):
     return 1 if failed else 0
 
 
+def read_ppm(path):
+    """(width, height, bytes) of a binary PPM as fixtrace writes it."""
+    with open(path, 'rb') as f:
+        data = f.read()
+    magic, w, h, _, rest = data.split(maxsplit=4)
+    assert magic == b'P6'
+    return int(w), int(h), rest
+
+
+def flip_set(a, b):
+    """Pixels where two same-sized RGB images differ by more than 64."""
+    out = set()
+    for i in range(0, len(a), 3):
+        if (abs(a[i] - b[i]) > 64 or abs(a[i + 1] - b[i + 1]) > 64 or
+                abs(a[i + 2] - b[i + 2]) > 64):
+            out.add(i // 3)
+    return out
+
+
+def classify(n_jobs):
+    """Each flip of the short set by the depth where it first appears:
+    the scene rendered again with -d 0, 1, ... (0: the primary ray's own
+    decision; k: one taken k bounces or refractions down)."""
+    gen = generated_sizes()
+    ft = fixtrace()
+    todo = []
+    for sc in scenes():
+        with open(os.path.join(ROOT, 'scenes', sc + '.scene')) as f:
+            depth = 5
+            for line in f:
+                fl = line.split()
+                if fl[:1] == ['image'] and 'depth' in fl:
+                    depth = int(fl[fl.index('depth') + 1])
+        for i in SHORT:
+            todo.append((sc, gen[i][0], gen[i][1], depth))
+
+    def one(job, tmp):
+        sc, w, h, depth = job
+        scene = os.path.join(ROOT, 'scenes', sc + '.scene')
+        sets = []
+        for d in range(depth + 1):
+            img = []
+            for flag in ([], ['--reference']):
+                path = os.path.join(tmp, '%s-%dx%d-%d-%d.ppm' %
+                                    (sc, w, h, d, len(flag)))
+                subprocess.run([ft, '-q'] + flag + ['-W', str(w), '-H',
+                                str(h), '-s', '1', '-d', str(d), '-o', path,
+                                scene], check=True)
+                img.append(read_ppm(path)[2])
+                os.remove(path)
+            sets.append(flip_set(img[0], img[1]))
+        first = [0] * (depth + 1)
+        for px in sets[-1]:
+            first[min(d for d in range(depth + 1) if px in sets[d])] += 1
+        return sc, first
+
+    with tempfile.TemporaryDirectory() as tmp:
+        with ThreadPoolExecutor(max_workers=n_jobs) as ex:
+            res = list(ex.map(lambda j: one(j, tmp), todo))
+    by = {}
+    for sc, first in res:
+        acc = by.setdefault(sc, [0] * len(first))
+        for d, n in enumerate(first):
+            acc[d] += n
+    with open(DEPTHS, 'w') as f:
+        f.write('# tools/accuracy_sweep.py classify: per scene, the short '
+                'set\'s flips (1 spp) by the depth -d where each first '
+                'appears, 0 up\n')
+        for sc in sorted(by):
+            f.write('\t'.join([sc] + [str(n) for n in by[sc]]) + '\n')
+    for sc in sorted(by):
+        print('%-10s %s' % (sc, ' '.join('d%d:%d' % (d, n)
+                                          for d, n in enumerate(by[sc]))))
+    print('wrote %s' % os.path.relpath(DEPTHS, ROOT))
+    return 0
+
+
 def main(argv):
     n_jobs = 1
     args = argv[1:]
@@ -367,6 +467,8 @@ def main(argv):
         return 0
     if args == ['check']:
         return check(n_jobs)
+    if args == ['classify']:
+        return classify(n_jobs)
     if args == ['sizes']:
         print(' '.join('%dx%d' % s for s in generated_sizes()))
         return 0
