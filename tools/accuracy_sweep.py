@@ -295,21 +295,25 @@ def report():
         with open(DEPTHS) as f:
             drows = [l.rstrip('\n').split('\t') for l in f
                      if not l.startswith('#')]
-        deepest = max(len(r) for r in drows) - 2
+        deepest = max(len(r) for r in drows) - 3
         para('Which decision: each flip of the short set, by the depth '
              'where it first appears when the scene is rendered again with '
              '`-d 0`, `-d 1`, ... (0: on the primary ray: a silhouette, a '
              'shadow edge or a texture cell where the ray from the eye '
-             'lands; k: k reflections or refractions down). '
+             'lands; k: k reflections or refractions down), and how many '
+             'of them are texture cells: gone when the scene is rendered '
+             'again with each texture\'s two colours made one. '
              '`tools/accuracy_sweep.py classify` writes '
              'docs/accuracy-sweep-depths.tsv.')
-        w('| scene | ' + ' | '.join('depth %d' % d
-                                    for d in range(deepest + 1)) + ' |')
-        w('|---|' + '--:|' * (deepest + 1))
+        w('| scene | flips | ' + ' | '.join(
+            'depth %d' % d for d in range(deepest + 1)) +
+          ' | texture cells |')
+        w('|---|--:|' + '--:|' * (deepest + 2))
         for r in drows:
-            w('| %s | ' % r[0] + ' | '.join(
-                r[1 + d] if 1 + d < len(r) else '–'
-                for d in range(deepest + 1)) + ' |')
+            n = [int(x) for x in r[1:]]
+            w('| %s | %d | ' % (r[0], sum(n[:-1])) + ' | '.join(
+                str(n[d]) if d < len(n) - 1 else '–'
+                for d in range(deepest + 1)) + ' | %d |' % n[-1])
         w('')
     w('    make accuracy-sweep                # the sweep, this section, '
       'the ceilings')
@@ -394,6 +398,36 @@ def flip_set(a, b):
     return out
 
 
+def one_colour(text, scene_dir):
+    """The scene with each texture's two colours made one (the material's
+    colour becomes the texture's second), so that no texture-cell decision
+    shows; mesh paths made absolute, as the copy lives elsewhere."""
+    out = []
+    for line in text.replace('\\\n', ' ').split('\n'):
+        body = line.split('#', 1)[0]
+        tok = body.split()
+        if tok[:1] == ['material']:
+            rgb = None
+            for i, t in enumerate(tok):
+                if t in ('checker', 'checker3d'):
+                    rgb = tok[i + 1:i + 4]
+                elif t == 'stripes':
+                    rgb = tok[i + 2:i + 5]
+            if rgb:
+                if 'color' in tok:
+                    i = tok.index('color')
+                    tok[i + 1:i + 4] = rgb
+                else:
+                    tok += ['color'] + rgb
+                line = ' '.join(tok)
+        elif tok[:1] == ['mesh'] and 'file' in line:
+            q = line.index('"')
+            if line[q + 1] != '/':
+                line = line[:q + 1] + scene_dir + '/' + line[q + 1:]
+        out.append(line)
+    return '\n'.join(out)
+
+
 def classify(n_jobs):
     """Each flip of the short set by the depth where it first appears:
     the scene rendered again with -d 0, 1, ... (0: the primary ray's own
@@ -411,25 +445,30 @@ def classify(n_jobs):
         for i in SHORT:
             todo.append((sc, gen[i][0], gen[i][1], depth))
 
+    def flips(scene, w, h, d, tmp, tag):
+        img = []
+        for flag in ([], ['--reference']):
+            path = os.path.join(tmp, '%s-%dx%d-%d-%d.ppm' %
+                                (tag, w, h, d, len(flag)))
+            subprocess.run([ft, '-q'] + flag + ['-W', str(w), '-H', str(h),
+                            '-s', '1', '-d', str(d), '-o', path, scene],
+                           check=True)
+            img.append(read_ppm(path)[2])
+            os.remove(path)
+        return flip_set(img[0], img[1])
+
     def one(job, tmp):
         sc, w, h, depth = job
         scene = os.path.join(ROOT, 'scenes', sc + '.scene')
-        sets = []
-        for d in range(depth + 1):
-            img = []
-            for flag in ([], ['--reference']):
-                path = os.path.join(tmp, '%s-%dx%d-%d-%d.ppm' %
-                                    (sc, w, h, d, len(flag)))
-                subprocess.run([ft, '-q'] + flag + ['-W', str(w), '-H',
-                                str(h), '-s', '1', '-d', str(d), '-o', path,
-                                scene], check=True)
-                img.append(read_ppm(path)[2])
-                os.remove(path)
-            sets.append(flip_set(img[0], img[1]))
+        sets = [flips(scene, w, h, d, tmp, sc) for d in range(depth + 1)]
         first = [0] * (depth + 1)
         for px in sets[-1]:
             first[min(d for d in range(depth + 1) if px in sets[d])] += 1
-        return sc, first
+        plain = os.path.join(tmp, '%s-%dx%d-plain.scene' % (sc, w, h))
+        with open(scene) as f, open(plain, 'w') as g:
+            g.write(one_colour(f.read(), os.path.dirname(scene)))
+        kept = flips(plain, w, h, depth, tmp, sc + '-plain')
+        return sc, first + [len(sets[-1] - kept)]
 
     with tempfile.TemporaryDirectory() as tmp:
         with ThreadPoolExecutor(max_workers=n_jobs) as ex:
@@ -442,12 +481,14 @@ def classify(n_jobs):
     with open(DEPTHS, 'w') as f:
         f.write('# tools/accuracy_sweep.py classify: per scene, the short '
                 'set\'s flips (1 spp) by the depth -d where each first '
-                'appears, 0 up\n')
+                'appears, 0 up; last, how many of them go when each '
+                'texture\'s two colours are made one\n')
         for sc in sorted(by):
             f.write('\t'.join([sc] + [str(n) for n in by[sc]]) + '\n')
     for sc in sorted(by):
-        print('%-10s %s' % (sc, ' '.join('d%d:%d' % (d, n)
-                                          for d, n in enumerate(by[sc]))))
+        print('%-10s %s texture:%d' % (sc, ' '.join(
+            'd%d:%d' % (d, n) for d, n in enumerate(by[sc][:-1])),
+            by[sc][-1]))
     print('wrote %s' % os.path.relpath(DEPTHS, ROOT))
     return 0
 
