@@ -4,6 +4,14 @@
 #   make accuracy        every measurement and the report: docs/accuracy.md
 #                        and docs/accuracy.svg (tools/accuracy.sh; about
 #                        5 minutes on 2 cores; ACC_JOBS=n runs n at once)
+#   make accuracy-sweep  decision flips and PSNR of the fixed-point core and
+#                        of the float32 reference against the double one,
+#                        every scene at many sizes and 1, 4 and 16 spp
+#                        (tools/accuracy_sweep.py): docs/accuracy-sweep.tsv,
+#                        docs/accuracy-sweep-depths.tsv (flips by the depth
+#                        where they appear), tests/accuracy_ceilings.txt and
+#                        docs/accuracy.md's section on them (about 5 CPU
+#                        minutes; ACC_JOBS=n renders n at once, default 2)
 #   make softref SR=v [SCENE=... WIDTH=... HEIGHT=... SPP=...]
 #   make softref-qemu SR=v [same]
 #                        the double reference renderer (port/posix/
@@ -24,10 +32,18 @@
 #   make HOST_BUILD=build/posix-u16 RT_DEFS=-DRT_UNIT_BITS=16 build/posix-u16/fixtrace
 #   make qemu BOARD=an385 FW_BUILD=build/accuracy/fw-an385-u16 FW_DEFS=-DRT_UNIT_BITS=16
 
-.PHONY: accuracy softref softref-qemu sr-check sr-force
+.PHONY: accuracy accuracy-sweep softref softref-qemu sr-check sr-force
 
 accuracy:
 	$(Q)MAKE="$(MAKE)" bash tools/accuracy.sh
+
+ACC_JOBS ?= 2
+accuracy-sweep: $(FIXTRACE)
+	$(Q)FIXTRACE=$(FIXTRACE) nice python3 tools/accuracy_sweep.py \
+	    -j $(ACC_JOBS) measure
+	$(Q)FIXTRACE=$(FIXTRACE) nice python3 tools/accuracy_sweep.py \
+	    -j $(ACC_JOBS) classify
+	$(Q)bash tools/accuracy_report.sh
 
 SR ?= m3-f64
 SCENE ?= scenes/seed.scene

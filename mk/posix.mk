@@ -24,7 +24,11 @@ POSIX_MAIN := port/posix/main.c
 POSIX_LIB_SRC := $(filter-out $(POSIX_MAIN),$(sort $(wildcard port/posix/*.c)))
 
 HOST_CORE_OBJ := $(CORE_SRC:%.c=$(HOST_BUILD)/%.o)
-HOST_PORT_OBJ := $(POSIX_LIB_SRC:%.c=$(HOST_BUILD)/%.o)
+# The reference renderer a second time in float32 (port/posix/ref32.h):
+# its objects go under $(HOST_BUILD)/ref32/ with ref32_ names.
+REF32_SRC := $(sort $(wildcard port/posix/ref_*.c))
+REF32_OBJ := $(REF32_SRC:%.c=$(HOST_BUILD)/ref32/%.o)
+HOST_PORT_OBJ := $(POSIX_LIB_SRC:%.c=$(HOST_BUILD)/%.o) $(REF32_OBJ)
 HOST_MAIN_OBJ := $(POSIX_MAIN:%.c=$(HOST_BUILD)/%.o)
 HOST_ALL_OBJ := $(HOST_CORE_OBJ) $(HOST_PORT_OBJ) $(HOST_MAIN_OBJ)
 
@@ -52,6 +56,13 @@ $(HOST_BUILD)/core/%.o: core/%.c
 $(HOST_BUILD)/port/posix/%.o: port/posix/%.c | $(HOST_BUILD)/port/posix
 	@$(if $(Q),echo "  CC      $<")
 	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) $(CORE_INC) -Iport/posix -MMD -MP -c $< -o $@
+
+$(HOST_BUILD)/ref32/port/posix/%.o: port/posix/%.c port/posix/ref32.h
+	@$(if $(Q),echo "  CC      $< (float32)")
+	$(Q)mkdir -p $(@D)
+	$(Q)$(CC) $(HOST_CFLAGS) $(WARN) -fsingle-precision-constant \
+	    -include port/posix/ref32.h $(CORE_INC) -Iport/posix -MMD -MP \
+	    -c $< -o $@
 
 $(FIXTRACE): $(HOST_ALL_OBJ)
 	@$(if $(Q),echo "  LD      $@")

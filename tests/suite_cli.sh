@@ -185,6 +185,8 @@ for v in 0 256 -3 x ''; do
 done
 expect 2 'needs a value' -- "$FT" "$SEED" --draft
 expect 2 '--draft is a fixed-point core mode' -- "$FT" -q --reference --draft 8 -o "$tmp/r.ppm" "$SEED"
+expect 2 '--window is a fixed-point core mode' -- "$FT" -q --reference-float --window 0,0,8,8 -o "$tmp/r.ppm" "$SEED"
+expect 0 'float32 reference' -- "$FT" -W 40 -H 30 --reference-float -o "$tmp/r32.ppm" "$SEED"
 expect 0 '' -- "$FT" -q -W 40 -H 30 -o "$tmp/a.png" "$SEED"
 head -c 8 "$tmp/a.png" | od -An -tx1 | grep -q '89 50 4e 47 0d 0a 1a 0a' && ok || bad "PNG signature"
 # The extension picks the format in any letter case, as the name check

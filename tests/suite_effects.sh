@@ -9,7 +9,8 @@
 # - a build without draft renders (-DRT_NO_DRAFT) renders the same bytes
 #   and refuses --draft;
 # - the core compiles warning-free in every configuration of the removal
-#   flags a build can get (below), for the host and for the boards.
+#   flags a build can get (below) for the host, and in those a one-shape
+#   firmware gets for the boards.
 set -u
 cd "$(dirname "$0")/.."
 # -I for every layer folder of core/ (the Makefile exports the same).
@@ -22,6 +23,7 @@ bad() { fail=$((fail + 1)); echo "FAILED: $*"; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
+PRUNED_OPT="-O0 -g0"
 stat_of() { grep "^$1 " "$2" | awk '{print $2}'; }
 
 for scene in scenes/*.scene; do
@@ -43,8 +45,11 @@ for scene in scenes/*.scene; do
             bad "$name has no shadows but cast shadow rays";;
     esac
     # The pruned build gives the same bytes.
+    # Unoptimised (HOST_OPT): compiled in half the time, and the bytes
+    # must not depend on the optimisation either.
     build="build/pruned/$name"
-    if $MAKE -s HOST_BUILD="$build" RT_DEFS="$flags" "$build/fixtrace" \
+    if $MAKE -s HOST_BUILD="$build" HOST_OPT="$PRUNED_OPT" RT_DEFS="$flags" \
+            "$build/fixtrace" \
             >"$tmp/build.log" 2>&1; then
         ok
         "$build/fixtrace" -q -W 64 -H 48 -o "$tmp/$name.pruned.ppm" "$scene" &&
@@ -76,7 +81,8 @@ fi
 # Without draft renders (-DRT_NO_DRAFT, as make firmware builds with
 # DRAFT=0): the same bytes, and --draft refused.
 build=build/pruned/nodraft
-if $MAKE -s HOST_BUILD="$build" RT_DEFS=-DRT_NO_DRAFT "$build/fixtrace" \
+if $MAKE -s HOST_BUILD="$build" HOST_OPT="$PRUNED_OPT" RT_DEFS=-DRT_NO_DRAFT \
+        "$build/fixtrace" \
         >"$tmp/build.log" 2>&1; then
     "$build/fixtrace" -q -W 64 -H 48 -o "$tmp/nd.ppm" scenes/seed.scene &&
         cmp -s "$tmp/seed.ppm" "$tmp/nd.ppm" && ok ||
@@ -90,7 +96,7 @@ else
     bad "the build with -DRT_NO_DRAFT failed: $(tail -5 "$tmp/build.log")"
 fi
 
-# Every configuration compiles with -Werror: nothing removed, everything
+# The configurations compile with -Werror: nothing removed, everything
 # removed, each flag alone, and each shape kept alone, with every effect
 # and with none (a firmware for a scene of one shape). A static helper
 # that only some shapes or effects use must not become unused: GCC reports
@@ -117,6 +123,7 @@ no() { local n out=""; for n in "$@"; do out="$out -DRT_NO_$n"; done; echo $out;
 # firmware gives with DRAFT=0): alone, and with everything removed.
 configs=("" "$(no $names)" "$(no $names DRAFT)" "-DRT_NO_DRAFT")
 for n in $names; do configs+=("-DRT_NO_$n"); done
+shape_from=${#configs[@]}
 for s in $shapes; do
     others=$(echo $shapes | tr ' ' '\n' | grep -vx "$s" | tr '\n' ' ')
     configs+=("$(no $others)" "$(no $others $effects DRAFT)")
@@ -147,28 +154,71 @@ for b in $boards; do
     compilers+=("$b|$cc $fl $core_warn")
 done
 
+# The configurations each compiler takes (indices into configs): the host
+# every one; a board the full core, everything removed, and each shape
+# alone with every effect and with none. The CPU shows only in core/fx,
+# whose choices are constants in conditions like the removal flags', so
+# what the flags alone can break the host finds; the boards add the
+# cores a one-shape firmware gets, with their own types and back-ends.
+cfgs_of() {
+    if [ "$1" = 0 ]; then
+        echo "${!configs[@]}"
+    else
+        echo 0 1 2 3 $(seq "$shape_from" $((${#configs[@]} - 1)))
+    fi
+}
+
 # throttle: waits while JOBS jobs run.
 throttle() { while [ "$(jobs -rp | wc -l)" -ge "${JOBS:-2}" ]; do wait -n; done; }
-# Preprocess: $tmp/cfg/C.K lists "file hash" for compiler C, configuration K.
-mkdir -p "$tmp/cfg" "$tmp/cc"
+# Preprocess: $tmp/cfg/C.K lists "file hash" for compiler C, configuration
+# K. One preprocessor run takes every file of a configuration (starting a
+# compiler per file cost more than the preprocessing); each file's text is
+# its part of the output, from the line marker that opens it (no flags
+# after the name) to the next file's.
+split_hash() {
+    awk -v dir="$1" '
+        /^# [01] "core\/[^"]*\.c"$/ {
+            name = $3; gsub(/"/, "", name)
+            if (name != cur) {
+                if (out != "") close(out)
+                cur = name; out = name; gsub(/\//, "%", out)
+                out = dir "/" out; printf "" >out
+            }
+        }
+        out != "" { print >>out }'
+    (cd "$1" && md5sum -- *) | awk '{ f = $2; gsub(/%/, "/", f); print f, $1 }'
+}
+mkdir -p "$tmp/cfg" "$tmp/cc" "$tmp/pp"
+nfiles=$(ls core/*/*.c | wc -l)
 for c in "${!compilers[@]}"; do
-    for k in "${!configs[@]}"; do
+    for k in $(cfgs_of "$c"); do
         (
-            cmd=${compilers[$c]#*|}
-            for f in core/*/*.c; do
-                # shellcheck disable=SC2086
-                h=$($cmd ${configs[$k]} $CORE_INC -E "$f" 2>&1 | md5sum)
-                echo "$f ${h%% *}"
-            done >"$tmp/cfg/$c.$k"
+            d="$tmp/pp/$c.$k"
+            mkdir -p "$d"
+            # shellcheck disable=SC2086
+            ${compilers[$c]#*|} ${configs[$k]} $CORE_INC -E core/*/*.c \
+                2>"$d.err" | split_hash "$d" >"$tmp/cfg/$c.$k"
+            # A preprocessing error (an #error) leaves no trace in the
+            # text: then each file compiles with this configuration, which
+            # reports it.
+            if [ -s "$d.err" ]; then
+                sed -i "s/\$/-$k/" "$tmp/cfg/$c.$k"
+            fi
+            rm -rf "$d" "$d.err"
         ) &
         throttle
     done
 done
 wait
+# A file the split missed would go unchecked.
+for f in "$tmp"/cfg/*; do
+    [ "$(wc -l <"$f")" = "$nfiles" ] ||
+        bad "preprocessing ${f##*/} gave $(wc -l <"$f") of $nfiles files"
+done
 # Compile each distinct text once, with the first configuration that has it.
 declare -A seen=()
 for c in "${!compilers[@]}"; do
-    for k in "${!configs[@]}"; do
+    for k in $(cfgs_of "$c"); do
         while read -r f h; do
             [ -n "${seen[$c.$h]:-}" ] && continue
             seen[$c.$h]=1
@@ -184,7 +234,7 @@ for c in "${!compilers[@]}"; do
 done
 wait
 for c in "${!compilers[@]}"; do
-    for k in "${!configs[@]}"; do
+    for k in $(cfgs_of "$c"); do
         failed=""
         while read -r f h; do
             [ "$(cat "$tmp/cc/$c.$h.rc" 2>/dev/null)" = 0 ] ||
@@ -196,9 +246,9 @@ for c in "${!compilers[@]}"; do
                 "[${configs[$k]:-nothing removed}]:$failed"
     done
 done
-echo "configurations: ${#configs[@]} for $(for c in "${compilers[@]}"; do
-    printf '%s ' "${c%%|*}"; done)($(ls "$tmp"/cc/*.rc | wc -l) distinct" \
-    "compilations)"
+echo "configurations: $(for c in "${!compilers[@]}"; do
+    printf '%s %s, ' "${compilers[$c]%%|*}" "$(cfgs_of "$c" | wc -w)"; done)" \
+    "$(ls "$tmp"/cc/*.rc | wc -l) distinct compilations"
 
 if [ $skip -gt 0 ]; then
     echo "$pass passed, $fail failed, $skip skipped"

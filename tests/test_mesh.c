@@ -386,8 +386,71 @@ static test_mesh make_at(const char *name, int torus, double scale,
     return tm;
 }
 
+/* A flat grid of side x side vertices, 1/16 apart in the plane y = 0,
+ * and its first n triangles (two a cell, counter-clockwise from above). */
+static rt_mesh *grid(unsigned side, unsigned n, char *msg, size_t cap)
+{
+    fx_vec3 *v = malloc(side * side * sizeof *v);
+    uint32_t *tri = malloc(3u * 2 * (side - 1) * (side - 1) * sizeof *tri);
+    rt_mesh *m = NULL;
+    if (CHECK(v && tri && n <= 2 * (side - 1) * (side - 1))) {
+        for (unsigned z = 0; z < side; z++)
+            for (unsigned x = 0; x < side; x++)
+                v[z * side + x] = fx_v3((fx_t)(x << 12), 0, (fx_t)(z << 12));
+        unsigned k = 0;
+        for (unsigned z = 0; z + 1 < side; z++)
+            for (unsigned x = 0; x + 1 < side; x++) {
+                const uint32_t a = z * side + x, b = a + 1, c = a + side,
+                               d = c + 1;
+                const uint32_t t[6] = {a, c, b, b, c, d};
+                memcpy(&tri[k], t, sizeof t);
+                k += 6;
+            }
+        m = mesh_build(v, side * side, NULL, tri, n, msg, cap);
+    }
+    free(v);
+    free(tri);
+    return m;
+}
+
+/* The documented limit, RT_MESH_MAX triangles (scene-format.md): a mesh
+ * of exactly that many builds, within the 16-bit node indices, passes the
+ * core's check and is hit where it lies; one more is refused by name. */
+static void test_limit(void)
+{
+    char msg[160];
+    const unsigned counts[] = {65522, RT_MESH_MAX};
+    for (int i = 0; i < 2; i++) {
+        rt_mesh *m = grid(183, counts[i], msg, sizeof msg);
+        if (!CHECK(m != NULL)) {
+            printf("    %u triangles: %s\n", counts[i], msg);
+            continue;
+        }
+        CHECK_EQ(m->n_tris, counts[i]);
+        CHECK(m->n_nodes <= RT_MESH_MAX);
+        rt_object o;
+        memset(&o, 0, sizeof o);
+        o.kind = RT_MESH;
+        o.mesh = m;
+        CHECK_EQ(rt_object_prepare(&o), RT_OK);
+        /* Straight down onto the middle of a cell: t = 5 exactly. */
+        rt_ray r;
+        rt_ray_set(&r, q16v(5.03125, 5, 5.03125), fx_d3(0, -FX_UONE, 0));
+        fx_t t = 0;
+        uint16_t tri = 0;
+        CHECK_EQ(rt_mesh_hit(&o, &r, 0, FX_MAX, &t, &tri), 1);
+        CHECK_EQ(t, FX_INT(5));
+        mesh_free(m);
+    }
+    rt_mesh *m = grid(183, RT_MESH_MAX + 1, msg, sizeof msg);
+    CHECK(m == NULL);
+    CHECK(strstr(msg, "at most 65535") != NULL);
+    mesh_free(m);
+}
+
 int main(void)
 {
+    test_limit();
     test_mesh ms[2];
     ms[0] = make("icosphere", 0, 1.0);
     ms[1] = make("torus", 1, 1.0);

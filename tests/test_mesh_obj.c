@@ -29,19 +29,27 @@ static rt_mesh *parse(const char *obj, const rt_mesh_place *pl,
     return mesh_obj_parse(obj, strlen(obj), pl, e, ign);
 }
 
-/* The OBJ text must fail at line:col with msg in the message. */
-static void bad(const char *obj, unsigned line, unsigned col, const char *msg)
+/* The OBJ text of len bytes, placed by pl, must fail at line:col with msg
+ * in the message. */
+static void bad_n(const char *obj, size_t len, const rt_mesh_place *pl,
+                  unsigned line, unsigned col, const char *msg)
 {
     rt_parse_error e;
-    unsigned long ign;
-    rt_mesh_place pl = plain();
-    rt_mesh *m = parse(obj, &pl, &e, &ign);
+    unsigned long ign = 0;
+    rt_mesh *m = mesh_obj_parse(obj, len, pl, &e, &ign);
     CHECK(m == NULL);
     mesh_free(m);
     CHECK_EQ(e.line, line);
     CHECK_EQ(e.col, col);
     if (!CHECK(strstr(e.msg, msg) != NULL))
         printf("    message: %s\n", e.msg);
+}
+
+/* The OBJ text must fail at line:col with msg in the message. */
+static void bad(const char *obj, unsigned line, unsigned col, const char *msg)
+{
+    rt_mesh_place pl = plain();
+    bad_n(obj, strlen(obj), &pl, line, col, msg);
 }
 
 static const char quad_obj[] =
@@ -148,9 +156,112 @@ static void test_statement(void)
     }
 }
 
+/* Appends printf-style text to a growing buffer (the tests' big OBJs). */
+typedef struct {
+    char *p;
+    size_t n, cap;
+} text_buf;
+
+static void put(text_buf *b, const char *fmt, unsigned a, unsigned c)
+{
+    if (b->cap - b->n < 64) {
+        b->cap = b->cap ? 2 * b->cap : 1 << 16;
+        b->p = realloc(b->p, b->cap);
+        if (!b->p)
+            abort();
+    }
+    b->n += (size_t)snprintf(b->p + b->n, b->cap - b->n, fmt, a, c);
+}
+
+/* Errors found once the whole file is read point at the statement at
+ * fault, not at the file's last line: a vertex placed out of range, the
+ * vertex that makes the mesh span too far, the face that brings it to
+ * one triangle or one vertex too many. */
+static void test_located(void)
+{
+    rt_mesh_place pl = plain();
+    const char *far = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 20000 0 0\n"
+                      "f 1 2 3\nf 1 2 4\n# the end\n";
+    pl.scale = FX_INT(2);
+    bad_n(far, strlen(far), &pl, 4, 1, "scaled, leaves the Q16.16 range");
+    pl = plain();
+    pl.translate = fx_v3(FX_INT(15000), 0, 0);
+    bad_n(far, strlen(far), &pl, 4, 1, "rotated and moved, leaves the");
+    pl = plain();
+    bad("v -9000 0 0\nv 0 1 0\nv 9000 0 0\nv 0 0 1\nf 2 4 1\nf 2 4 3\n"
+        "f 1 2 4\n", 3, 1, "span more than 16384 units");
+
+    /* A grid of 183 x 183 vertices has 66,248 triangles, one a line. */
+    text_buf b = {NULL, 0, 0};
+    const unsigned side = 183;
+    for (unsigned z = 0; z < side; z++)
+        for (unsigned x = 0; x < side; x++)
+            put(&b, "v %u 0 %u\n", x, z);
+    for (unsigned z = 0; z + 1 < side; z++)
+        for (unsigned x = 0; x + 1 < side; x++) {
+            const unsigned a = z * side + x + 1, c = a + side;
+            put(&b, "f %u %u", a, c);
+            put(&b, " %u\nf %u", a + 1, a + 1);
+            put(&b, " %u %u\n", c, c + 1);
+        }
+    bad_n(b.p, b.n, &pl, side * side + RT_MESH_MAX + 1, 1,
+          "this face brings the mesh to 65536 triangles");
+
+    /* 21,846 triangles of their own 3 vertices each: the 21,846th face
+     * brings the vertices to 65,536. */
+    b.n = 0;
+    const unsigned nt = 21846;
+    for (unsigned i = 0; i < 3 * nt; i++)
+        put(&b, "v %u %u 1\n", i % 256, i / 256);
+    for (unsigned i = 0; i < nt; i++) {
+        put(&b, "f %u %u", 3 * i + 1, 3 * i + 2);
+        put(&b, " %u\n", 3 * i + 3, 0);
+    }
+    pl = plain();
+    bad_n(b.p, b.n, &pl, 3 * nt + nt, 1,
+          "this face brings the mesh to 65536 vertices");
+    free(b.p);
+}
+
+/* Malformed, out-of-range and non-ASCII input each get their own message;
+ * an exponent too small for a double is still a number (0). */
+static void test_bytes(void)
+{
+    rt_parse_error e;
+    unsigned long ign;
+    rt_mesh_place pl = plain();
+    rt_mesh *m = parse("v 1e-400 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", &pl,
+                       &e, &ign);
+    if (CHECK(m != NULL)) {
+        int zero = 0;
+        for (unsigned i = 0; i < m->n_verts; i++)
+            zero += m->v[i].x == 0 && m->v[i].y == 0;
+        CHECK_EQ(zero, 1);
+        mesh_free(m);
+    } else {
+        printf("    %u:%u: %s\n", (unsigned)e.line, (unsigned)e.col, e.msg);
+    }
+    bad("v 1e400 0 0\n", 1, 3, "1e400 is out of range");
+    bad("v 0 0 0\nv 40000 0 0\n", 2, 3, "40000 is out of range");
+    bad("v 0 0 0\nv 1 x2 0\n", 2, 5, "'x2' is not one");
+    bad("v 0 0 0\nv 1 nan 0\n", 2, 5, "'nan' is not one");
+    bad("v 0 0 0\nv 1 0\xc3\xa9 0\n", 2, 6, "not ASCII (0xC3)");
+    bad("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\xe2\n", 4, 8,
+        "not ASCII (0xE2)");
+    static const char nul[] = "v 0 0 0\nv 1 \0 0\nv 0 1 0\nf 1 2 3\n";
+    bad_n(nul, sizeof nul - 1, &pl, 2, 5, "a NUL byte");
+    /* Outside the statements read, any byte goes (a UTF-8 group name). */
+    m = parse("g caf\xc3\xa9\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", &pl, &e,
+              &ign);
+    CHECK(m != NULL);
+    mesh_free(m);
+}
+
 int main(void)
 {
     test_obj();
+    test_located();
+    test_bytes();
     test_statement();
     return th_summary();
 }

@@ -2,7 +2,9 @@
 # SPDX-License-Identifier: MIT
 # accuracy_report.sh: writes docs/accuracy.md, docs/accuracy.svg and
 # docs/accuracy-work.svg from the measurements tools/accuracy.sh collected,
-# which it keeps in docs/accuracy-data.tsv.
+# which it keeps in docs/accuracy-data.tsv, and from the sweep's
+# docs/accuracy-sweep.tsv (make accuracy-sweep; tools/accuracy_sweep.py
+# writes that section).
 #   tools/accuracy_report.sh            write the three from the data
 #   tools/accuracy_report.sh --check    exit 1 unless they follow from it
 # Plain awk: no plotting package.
@@ -363,6 +365,8 @@ ${table3}
 
 The seed's draft is a point on the chart of the work knobs above; its
 picture is the last row of the pictures' table.
+
+$(python3 tools/accuracy_sweep.py report)
 
 ## Which to use
 

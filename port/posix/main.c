@@ -45,7 +45,8 @@ typedef struct {
     const char *scene_path;
     const char *out_path;
     long width, height, spp, depth, jobs, adaptive, draft;
-    int stats, quiet, reference, build_flags, emit_c;
+    int stats, quiet, build_flags, emit_c;
+    int reference; /* 0: the core; 1: the double reference; 2: float32 */
     const char *format; /* rgb888 (default), rgb565le, rgb565be, or a
                            panel's: mono, mono-page, grey4 */
     int dither;         /* 0, 1 ordered, 2 diffusion (panels only) */
@@ -122,6 +123,8 @@ static void usage(FILE *f)
 "                        pixel by half an 8-bit level / spp, all of them\n"
 "                        together, are skipped\n"
 "        --reference     render with the double-precision reference\n"
+"        --reference-float\n"
+"                        render with the same reference built in float32\n"
 "        --stats         print ray counters and timing on stderr\n"
 "        --build-flags   print the -DRT_NO_* flags that remove every effect\n"
 "                        the scene (at this spp) does not need, and exit;\n"
@@ -277,6 +280,8 @@ static int parse_args(int argc, char **argv, cli *c)
             c->quiet = 1;
         } else if (strcmp(a, "--reference") == 0) {
             c->reference = 1;
+        } else if (strcmp(a, "--reference-float") == 0) {
+            c->reference = 2;
         } else if (strcmp(a, "--build-flags") == 0) {
             c->build_flags = 1;
         } else if (strcmp(a, "--emit-c") == 0) {
@@ -499,7 +504,9 @@ static int render_scene(const cli *c, const rt_scene *scene)
         return cli_error("--adaptive needs more than one sample per pixel; "
                          "%s renders at 1 spp, so add -s 4, 9 or 16",
                          c->scene_path);
-    j.render = c->reference ? ref_render_rows : rt_render_rows;
+    j.render = c->reference == 2 ? ref32_render_rows
+               : c->reference ? ref_render_rows
+                              : rt_render_rows;
     if (c->reference && c->adaptive)
         return cli_error("--adaptive is a fixed-point core mode; the "
                          "reference always takes every sample");
@@ -600,7 +607,9 @@ static int render_scene(const cli *c, const rt_scene *scene)
     } else if (!c->quiet && strcmp(path, "-") != 0) {
         fprintf(stderr, "fixtrace: wrote %s (%dx%d, %d spp%s)\n", path,
                 j.x1 - j.x0, j.y1 - j.y0, j.opt.spp,
-                c->reference ? ", reference" : "");
+                c->reference == 2 ? ", float32 reference"
+                : c->reference    ? ", reference"
+                                  : "");
     }
     if (c->stats) {
         const uint64_t pixels =

@@ -17,6 +17,8 @@
 #include "mesh_build.h"
 
 #define BINS 16
+/* Most leaves of one hierarchy: 2 n - 1 nodes must fit RT_MESH_MAX. */
+#define MESH_MAX_LEAVES ((RT_MESH_MAX + 1) / 2)
 #define COST_BOX 1.0  /* a box test, relative to ... */
 #define COST_TRI 1.5  /* ... a triangle test (Cortex-M3 counts) */
 
@@ -74,8 +76,14 @@ static void set_box(builder *b, rt_mesh_node *nd, const box64 *bx)
 }
 
 /* Builds the subtree over perm[first .. first + count) at node index
- * b->n_nodes, depth levels below the root. */
-static void build(builder *b, unsigned first, unsigned count, unsigned depth)
+ * b->n_nodes, depth levels below the root, with at most `leaves` leaves
+ * (at least 1). A subtree of n leaves has 2n - 1 nodes, so the root's
+ * share, half of RT_MESH_MAX + 1, keeps every mesh within the 16-bit node
+ * indices. A mesh of up to that many triangles is never held back by it:
+ * each child gets its own count of triangles as its share, and a leaf
+ * holds at least one. */
+static void build(builder *b, unsigned first, unsigned count, unsigned depth,
+                  unsigned leaves)
 {
     const unsigned ni = b->n_nodes++;
     rt_mesh_node *nd = &b->node[ni];
@@ -97,7 +105,7 @@ static void build(builder *b, unsigned first, unsigned count, unsigned depth)
     /* The cheapest split of the centroid bins. */
     double best = COST_TRI * count;
     int best_axis = -1, best_cut = 0;
-    if (count > 1 && depth < RT_MESH_DEPTH) {
+    if (count > 1 && depth < RT_MESH_DEPTH && leaves > 1) {
         const double pa = box_area(&bx);
         for (int ax = 0; ax < 3; ax++) {
             const int64_t lo = cb.lo[ax], ext = cb.hi[ax] - cb.lo[ax];
@@ -146,7 +154,8 @@ static void build(builder *b, unsigned first, unsigned count, unsigned depth)
             }
         }
     }
-    if (best_axis < 0 && count > MESH_LEAF_MAX && depth < RT_MESH_DEPTH)
+    if (best_axis < 0 && count > MESH_LEAF_MAX && depth < RT_MESH_DEPTH &&
+        leaves > 1)
         best_axis = 3; /* no split pays, but the leaf is too full: halve */
     if (best_axis < 0) {
         nd->a = (uint16_t)first;
@@ -175,10 +184,16 @@ static void build(builder *b, unsigned first, unsigned count, unsigned depth)
         }
         mid = i;
     }
+    /* The children share the leaves in proportion to their triangles. */
+    uint64_t left = (uint64_t)leaves * (mid - first) / count;
+    if (left < 1)
+        left = 1;
+    if (left > leaves - 1)
+        left = leaves - 1;
     nd->n = 0;
-    build(b, first, mid - first, depth + 1);
+    build(b, first, mid - first, depth + 1, (unsigned)left);
     b->node[ni].a = (uint16_t)b->n_nodes;
-    build(b, mid, first + count - mid, depth + 1);
+    build(b, mid, first + count - mid, depth + 1, leaves - (unsigned)left);
 }
 
 static int fail(char *msg, size_t cap, const char *what)
@@ -272,7 +287,8 @@ rt_mesh *mesh_build(const fx_vec3 *v, unsigned n_verts, const fx_dir3 *vn,
     b.qshift = qshift;
     for (int i = 0; i < 3; i++)
         b.base[i] = all.lo[i];
-    build(&b, 0, n_tris, 0);
+    build(&b, 0, n_tris, 0, n_tris < MESH_MAX_LEAVES ? n_tris
+                                                     : MESH_MAX_LEAVES);
     for (unsigned t = 0; t < n_tris; t++)
         for (int j = 0; j < 3; j++)
             mt[3 * t + j] = (uint16_t)tri[3 * perm[t] + j];

@@ -11,14 +11,17 @@
 
 #include "rt_mesh.h"
 
-/* Most triangles in one leaf (more only at RT_MESH_DEPTH). */
+/* Most triangles in one leaf (more only at RT_MESH_DEPTH, or in a mesh of
+ * more than (RT_MESH_MAX + 1) / 2 triangles, whose leaves are shared out
+ * so that the nodes fit 16-bit indices). */
 #define MESH_LEAF_MAX 4
 
 /* Builds a mesh over n_tris triangles (3 indices into v each, counter-
  * clockwise seen from outside) of the n_verts vertices; vn (may be NULL)
  * gives unit vertex normals. Copies what it needs; the triangles are
  * reordered into leaf order. Returns the mesh, which mesh_free releases,
- * or NULL with the reason in msg (too many triangles or vertices, an
+ * or NULL with the reason in msg (more than RT_MESH_MAX triangles or
+ * vertices; up to that many always fit the hierarchy), an
  * index out of range, a mesh larger than 16384 units, no memory). */
 rt_mesh *mesh_build(const fx_vec3 *v, unsigned n_verts, const fx_dir3 *vn,
                     const uint32_t *tri, unsigned n_tris, char *msg,

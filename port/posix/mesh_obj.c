@@ -43,6 +43,66 @@ static int obj_fail(obj_lex *x, size_t off, size_t tok_len, const char *fmt,
     return -1;
 }
 
+/* Where a statement is: its line, for errors found after parsing. */
+typedef struct {
+    uint32_t line;
+    size_t line_off, line_end;
+} obj_loc;
+
+static obj_loc here(const obj_lex *x)
+{
+    obj_loc l = {x->line, x->line_off, x->line_end};
+    return l;
+}
+
+/* An error at the start of the statement at l. */
+#if defined(__GNUC__)
+__attribute__((format(printf, 3, 4)))
+#endif
+static int fail_at(obj_lex *x, const obj_loc *l, const char *fmt, ...)
+{
+    char m[sizeof x->err->msg];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(m, sizeof m, fmt, ap);
+    va_end(ap);
+    x->line = l->line;
+    x->line_off = l->line_off;
+    x->line_end = l->line_end;
+    return obj_fail(x, l->line_off, l->line_end - l->line_off, "%s", m);
+}
+
+/* Sets x's line to the one holding byte pos (counting from the start). */
+static void locate(obj_lex *x, size_t pos)
+{
+    x->line = 1;
+    x->line_off = 0;
+    for (size_t i = 0; i < pos; i++)
+        if (x->t[i] == '\n') {
+            x->line++;
+            x->line_off = i + 1;
+        }
+    x->line_end = x->line_off;
+    while (x->line_end < x->len && x->t[x->line_end] != '\n')
+        x->line_end++;
+}
+
+/* A byte outside ASCII in the token at off, n: an error there, else 0. */
+static int non_ascii(obj_lex *x, size_t off, size_t n, const char *where)
+{
+    for (size_t i = 0; i < n; i++) {
+        const unsigned char c = (unsigned char)x->t[off + i];
+        if (c >= 0x80) {
+            /* By hand: the WebAssembly port's printf has no %X. */
+            const char hex[] = {'0', 'x', "0123456789ABCDEF"[c >> 4],
+                                "0123456789ABCDEF"[c & 15], '\0'};
+            return obj_fail(x, off + i, 1, "a byte that is not ASCII (%s) "
+                            "in %s", hex, where);
+        }
+    }
+    return 0;
+}
+
 /* The next token on the line: *off and *n (0 at the line's end). */
 static void next_tok(obj_lex *x, size_t *off, size_t *n)
 {
@@ -67,21 +127,36 @@ static int number(obj_lex *x, const char *what, fx_t *out)
         return obj_fail(x, off, 0, "'%s' needs 3 numbers", what);
     if (rt_parse_fx(x->t + off, n, out, &used) == RT_OK && used == n)
         return 0;
-    /* 1e-3 and the like: strtod on a copy, then rounded as Q16.16. */
-    char buf[64];
+    if (non_ascii(x, off, n, "a number"))
+        return -1;
+    /* 1e-3 and the like: strtod on a copy, then rounded as Q16.16. The
+     * copy, cut at 24 bytes, names the token in messages. */
+    char buf[64], name[28];
+    const size_t nn = n < 24 ? n : 24;
+    memcpy(name, x->t + off, nn);
+    memcpy(name + nn, n > nn ? "..." : "", n > nn ? 4 : 1);
     if (n < sizeof buf) {
         memcpy(buf, x->t + off, n);
         buf[n] = '\0';
         char *end;
         errno = 0;
         const double v = strtod(buf, &end);
-        if (end == buf + n && errno == 0 && fabs(v) < 32767.0) {
-            *out = (fx_t)lround(v * 65536.0);
-            return 0;
+        if (end == buf + n && v == v) {
+            /* An underflow (1e-400) is a number too: it rounds to 0. */
+            if (errno == ERANGE && fabs(v) < 1.0) {
+                *out = 0;
+                return 0;
+            }
+            if (errno == 0 && fabs(v) < 32767.0) {
+                *out = (fx_t)lround(v * 65536.0);
+                return 0;
+            }
+            return obj_fail(x, off, n, "'%s' needs numbers within +-32767 "
+                            "(Q16.16); %s is out of range", what, name);
         }
     }
-    return obj_fail(x, off, n, "'%s' needs numbers within +-32767 (Q16.16)",
-                    what);
+    return obj_fail(x, off, n, "'%s' needs numbers; '%s' is not one", what,
+                    name);
 }
 
 /* A growing array of fixed-size elements. */
@@ -122,6 +197,8 @@ static int index_of(obj_lex *x, size_t off, size_t n, const char *s, size_t k,
     int neg = s[0] == '-';
     if (neg)
         i = 1;
+    if (non_ascii(x, off, n, "a face"))
+        return -1;
     if (i == k)
         return obj_fail(x, off, n, "bad %s index in a face", what);
     for (; i < k; i++) {
@@ -204,7 +281,8 @@ static int cmp_corner(const void *a, const void *b)
 /* The mesh from the parsed lists: one vertex per distinct (v, vn) pair
  * when the normals are used, else per v. */
 static rt_mesh *assemble(obj_lex *x, const vec *pos, const vec *nrm,
-                         const vec *cor, const rt_mesh_place *pl)
+                         const vec *cor, const obj_loc *vloc,
+                         const obj_loc *floc, const rt_mesh_place *pl)
 {
     const fx_vec3 *P = pos->p;
     const fx_vec3 *N = nrm->p;
@@ -233,20 +311,48 @@ static rt_mesh *assemble(obj_lex *x, const vec *pos, const vec *nrm,
     for (size_t k = 0; k < nc; k++)
         if (nu == 0 || cmp_corner(&u[nu - 1], &u[k]) != 0)
             u[nu++] = u[k];
+    if (nu > RT_MESH_MAX) {
+        /* The face whose corner is the first one too many. */
+        unsigned char *seen = calloc(nu, 1);
+        size_t count = 0, k = 0;
+        for (; seen && k < nc && count <= RT_MESH_MAX; k++) {
+            const corner *f = bsearch(&C[k], u, nu, sizeof *u, cmp_corner);
+            count += !seen[f - u];
+            seen[f - u] = 1;
+        }
+        free(seen);
+        if (count > RT_MESH_MAX)
+            fail_at(x, &floc[(k - 1) / 3], "this face brings the mesh to "
+                    "%u vertices; at most %u fit", RT_MESH_MAX + 1,
+                    RT_MESH_MAX);
+        else
+            obj_fail(x, x->line_off, 0, "out of memory");
+        goto done;
+    }
     const mat30 rot = rotation(pl->rotate);
     for (size_t k = 0; k < nu; k++) {
         const fx_vec3 p = P[u[k].v];
-        const int64_t s[3] = {fx_mul(p.x, pl->scale), fx_mul(p.y, pl->scale),
-                              fx_mul(p.z, pl->scale)};
-        int64_t r[3];
+        const fx_t pc[3] = {p.x, p.y, p.z};
+        int64_t s[3], r[3];
+        for (int i = 0; i < 3; i++) {
+            /* fx_mul saturates; a vertex scaled beyond the range is an
+             * error, not a vertex moved to its edge. */
+            const int64_t wide = (int64_t)pc[i] * pl->scale / 65536;
+            if (wide < FX_MIN || wide > FX_MAX) {
+                fail_at(x, &vloc[u[k].v], "this vertex, scaled, leaves the "
+                        "Q16.16 range (+-32767)");
+                goto done;
+            }
+            s[i] = fx_mul(pc[i], pl->scale);
+        }
         apply(&rot, s, r);
         r[0] += pl->translate.x;
         r[1] += pl->translate.y;
         r[2] += pl->translate.z;
         for (int i = 0; i < 3; i++)
             if (r[i] < FX_MIN || r[i] > FX_MAX) {
-                obj_fail(x, x->line_off, 0, "a placed vertex leaves the "
-                         "Q16.16 range (+-32767)");
+                fail_at(x, &vloc[u[k].v], "this vertex, scaled, rotated "
+                        "and moved, leaves the Q16.16 range (+-32767)");
                 goto done;
             }
         v[k] = fx_v3((fx_t)r[0], (fx_t)r[1], (fx_t)r[2]);
@@ -258,8 +364,12 @@ static rt_mesh *assemble(obj_lex *x, const vec *pos, const vec *nrm,
             vn[k] = fx_d3_normalize64(rn[0], rn[1], rn[2]);
         }
     }
-    /* Triangles, dropping those with no area (they can never be hit). */
+    /* Triangles, dropping those with no area (they can never be hit). The
+     * box of the vertices kept so far finds the one that makes the mesh
+     * too large (mesh_build's limit, found here to name its line). */
     size_t nt = 0;
+    int64_t lo[3] = {INT64_MAX, INT64_MAX, INT64_MAX};
+    int64_t hi[3] = {INT64_MIN, INT64_MIN, INT64_MIN};
     for (size_t k = 0; k + 2 < nc; k += 3) {
         uint32_t ix[3];
         for (int j = 0; j < 3; j++) {
@@ -285,6 +395,25 @@ static rt_mesh *assemble(obj_lex *x, const vec *pos, const vec *nrm,
         const fx_dir3 fn = fits ? fx_d3_cross_unit(a1, a2) : fx_d3(1, 0, 0);
         if (fn.x == 0 && fn.y == 0 && fn.z == 0)
             continue;
+        if (nt == RT_MESH_MAX) {
+            fail_at(x, &floc[k / 3], "this face brings the mesh to %u "
+                    "triangles; at most %u fit", RT_MESH_MAX + 1,
+                    RT_MESH_MAX);
+            goto done;
+        }
+        for (int j = 0; j < 3; j++) {
+            const fx_vec3 p = v[ix[j]];
+            const int64_t c3[3] = {p.x, p.y, p.z};
+            for (int i = 0; i < 3; i++) {
+                lo[i] = c3[i] < lo[i] ? c3[i] : lo[i];
+                hi[i] = c3[i] > hi[i] ? c3[i] : hi[i];
+                if (hi[i] - lo[i] >= ((int64_t)1 << 30)) {
+                    fail_at(x, &vloc[C[k + j].v], "this vertex makes the "
+                            "mesh span more than 16384 units");
+                    goto done;
+                }
+            }
+        }
         for (int j = 0; j < 3; j++) {
             tri[3 * nt + j] = ix[j];
             for (int i = 0; i < 3; i++)
@@ -323,12 +452,20 @@ rt_mesh *mesh_obj_parse(const char *text, size_t len, const rt_mesh_place *pl,
     vec pos = {NULL, 0, 0, sizeof(fx_vec3)};
     vec nrm = {NULL, 0, 0, sizeof(fx_vec3)};
     vec cor = {NULL, 0, 0, sizeof(corner)};
+    vec vl = {NULL, 0, 0, sizeof(obj_loc)}; /* each v's line */
+    vec fl = {NULL, 0, 0, sizeof(obj_loc)}; /* each triangle's face line */
     rt_mesh *m = NULL;
     memset(&x, 0, sizeof x);
     memset(err, 0, sizeof *err);
     x.t = text;
     x.len = len;
     x.err = err;
+    for (size_t i = 0; i < len; i++)
+        if (text[i] == '\0') {
+            locate(&x, i);
+            obj_fail(&x, i, 1, "a NUL byte: this is not a text OBJ file");
+            return NULL;
+        }
     size_t next = 0;
     int failed = 0;
     while (next < len && !failed) {
@@ -349,8 +486,11 @@ rt_mesh *mesh_obj_parse(const char *text, size_t len, const rt_mesh_place *pl,
         const char *k = text + off;
         if (n == 1 && k[0] == 'v') {
             fx_vec3 *p = push(&pos);
-            failed = !p || number(&x, "v", &p->x) || number(&x, "v", &p->y) ||
-                     number(&x, "v", &p->z);
+            obj_loc *l = push(&vl);
+            if (l)
+                *l = here(&x);
+            failed = !p || !l || number(&x, "v", &p->x) ||
+                     number(&x, "v", &p->y) || number(&x, "v", &p->z);
         } else if (n == 2 && k[0] == 'v' && k[1] == 'n') {
             fx_vec3 *p = push(&nrm);
             failed = !p || number(&x, "vn", &p->x) ||
@@ -393,8 +533,12 @@ rt_mesh *mesh_obj_parse(const char *text, size_t len, const rt_mesh_place *pl,
                         else
                             *t = fan[j];
                     }
+                    obj_loc *l = failed ? NULL : push(&fl);
+                    if (!failed && !l)
+                        failed = obj_fail(&x, o2, n2, "out of memory");
                     if (failed)
                         break;
+                    *l = here(&x);
                 }
                 if (count == 0)
                     first = c;
@@ -407,20 +551,25 @@ rt_mesh *mesh_obj_parse(const char *text, size_t len, const rt_mesh_place *pl,
         } else {
             (*ignored)++; /* vt, o, g, s, usemtl, mtllib, l, ... */
         }
-        if (!failed && (pos.n > 4u * RT_MESH_MAX || cor.n > 3u * RT_MESH_MAX))
-            failed = obj_fail(&x, off, n, "more than %u vertices or "
-                              "triangles", RT_MESH_MAX);
+        /* A bound on memory only: the limits of a mesh (faces with no
+         * area are dropped first) are checked once the file is read. */
+        if (!failed && (pos.n > 4u * RT_MESH_MAX || cor.n > 12u * RT_MESH_MAX))
+            failed = obj_fail(&x, off, n, "more than %u vertices or %u "
+                              "triangles in the file", 4u * RT_MESH_MAX,
+                              4u * RT_MESH_MAX);
     }
     if (!failed) {
         if (cor.n == 0) {
             obj_fail(&x, x.line_off, 0, "the file has no faces");
         } else {
-            m = assemble(&x, &pos, &nrm, &cor, pl);
+            m = assemble(&x, &pos, &nrm, &cor, vl.p, fl.p, pl);
         }
     }
     free(pos.p);
     free(nrm.p);
     free(cor.p);
+    free(vl.p);
+    free(fl.p);
     return m;
 }
 

@@ -13,12 +13,15 @@
 #include "ref_internal.h"
 #include "rt_mesh.h"
 
-/* Triangles per box. */
+/* Triangles per box, and boxes per group box (a group's box holds its
+ * boxes, so a ray that misses it misses every triangle in it). */
 #define RUN 8
+#define GROUP 8
 
 struct ref_mesh_boxes {
     unsigned n;
-    vec (*lo), (*hi);
+    vec (*lo), (*hi); /* n boxes, box k around triangles k*RUN.. */
+    vec (*glo), (*ghi); /* (n + GROUP - 1) / GROUP groups of boxes */
 };
 
 static vec vert(const rt_mesh *m, unsigned i) { return fxv(m->v[i]); }
@@ -30,13 +33,15 @@ int ref_mesh_setup(ref_shape *sh)
     struct ref_mesh_boxes *b = malloc(sizeof *b);
     if (!b)
         return -1;
+    const unsigned ng = (n + GROUP - 1) / GROUP;
     b->n = n;
     b->lo = malloc(n * sizeof *b->lo);
     b->hi = malloc(n * sizeof *b->hi);
-    if (!b->lo || !b->hi) {
-        free(b->lo);
-        free(b->hi);
-        free(b);
+    b->glo = malloc(ng * sizeof *b->glo);
+    b->ghi = malloc(ng * sizeof *b->ghi);
+    sh->boxes = b;
+    if (!b->lo || !b->hi || !b->glo || !b->ghi) {
+        ref_mesh_release(sh);
         return -1;
     }
     for (unsigned k = 0; k < n; k++) {
@@ -49,8 +54,19 @@ int ref_mesh_setup(ref_shape *sh)
             }
         b->lo[k] = lo;
         b->hi[k] = hi;
+        if (k % GROUP == 0) {
+            b->glo[k / GROUP] = lo;
+            b->ghi[k / GROUP] = hi;
+        }
+        lo = b->glo[k / GROUP];
+        hi = b->ghi[k / GROUP];
+        b->glo[k / GROUP] = v3(fmin(lo.x, b->lo[k].x),
+                               fmin(lo.y, b->lo[k].y),
+                               fmin(lo.z, b->lo[k].z));
+        b->ghi[k / GROUP] = v3(fmax(hi.x, b->hi[k].x),
+                               fmax(hi.y, b->hi[k].y),
+                               fmax(hi.z, b->hi[k].z));
     }
-    sh->boxes = b;
     return 0;
 }
 
@@ -59,6 +75,8 @@ void ref_mesh_release(ref_shape *sh)
     if (sh->boxes) {
         free(sh->boxes->lo);
         free(sh->boxes->hi);
+        free(sh->boxes->glo);
+        free(sh->boxes->ghi);
         free(sh->boxes);
         sh->boxes = NULL;
     }
@@ -111,6 +129,14 @@ int ref_mesh_hit(const ref_shape *sh, ref_vec3 o, ref_vec3 d, double tmax,
     long found = -1;
     const unsigned runs = (m->n_tris + RUN - 1) / RUN;
     for (unsigned k = 0; k < runs; k++) {
+        /* Rounding is monotone, so a group's slab interval holds each of
+         * its boxes' intervals: skipping on it changes no hit. */
+        if (bx && k % GROUP == 0 &&
+            !box_meets(bx->glo[k / GROUP], bx->ghi[k / GROUP], o, inv,
+                       best)) {
+            k += GROUP - 1;
+            continue;
+        }
         if (bx && !box_meets(bx->lo[k], bx->hi[k], o, inv, best))
             continue;
         for (unsigned i = k * RUN; i < m->n_tris && i < (k + 1) * RUN; i++) {

@@ -300,7 +300,9 @@ static vec shade(const ref_scene *rs, vec o, vec d, int depth, int obj,
 
 static vec trace(const ref_scene *rs, vec o, vec d, int depth, int skip)
 {
-    ref_hit hit;
+    /* Set only when a shape is hit; zeroed so that no compiler (the
+     * float32 build's in particular) sees it read uninitialised. */
+    ref_hit hit = {0, {0, 0, 0}};
     int obj = nearest(rs, o, d, skip, &hit);
     if (obj < 0)
         return rs->background;

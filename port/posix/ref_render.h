@@ -89,4 +89,11 @@ rt_status ref_render_rows(const rt_scene *s, const rt_options *o, int y0,
                           int y1, uint8_t *row_buf, rt_row_fn fn, void *ctx,
                           rt_stats *stats);
 
+/* ref_render_rows() compiled in float32 instead of double (port/posix/
+ * ref32.h): the same formulas, arguments and results, a float-class
+ * yardstick for the fixed-point core (fixtrace --reference-float). */
+rt_status ref32_render_rows(const rt_scene *s, const rt_options *o, int y0,
+                            int y1, uint8_t *row_buf, rt_row_fn fn,
+                            void *ctx, rt_stats *stats);
+
 #endif /* REF_RENDER_H */
