@@ -319,6 +319,7 @@ $(patsubst %.c,$(FW_BUILD)/%.o,$(foreach n,$(FW_COLD_SRC),$(filter %/$(n).c,$(CO
 # libc.c must not have its loops turned back into calls to itself.
 $(FW_BUILD)/port/baremetal/libc.o: FW_EXTRA := -fno-tree-loop-distribute-patterns
 $(FW_BUILD)/port/baremetal/main.o: $(FW_CONFIG)
+$(FW_BUILD)/port/baremetal/dual.o: $(FW_CONFIG)
 $(FW_BUILD)/port/baremetal/bringup.o: $(FW_CONFIG)
 $(FW_BUILD)/port/baremetal/out_uart.o: $(FW_CONFIG)
 
