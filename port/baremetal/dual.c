@@ -148,15 +148,18 @@ static void copy_row(uint8_t *dst, const uint8_t *src, size_t n)
 static int take_row(dual_core *c)
 {
     int y;
-    if (FW_HANDOUT == DUAL_COUNTER) {
-        /* LDREX/STREX on ARMv8-M Mainline. */
+    switch (FW_HANDOUT) {
+    case DUAL_COUNTER: /* LDREX/STREX on ARMv8-M Mainline */
         y = (int)__atomic_fetch_add(&sh.next_row, 1u, __ATOMIC_RELAXED);
-    } else if (FW_HANDOUT == DUAL_INTERLEAVE) {
+        break;
+    case DUAL_INTERLEAVE:
         y = c->last < 0 ? (int)c->core : c->last + 2;
-    } else {
+        break;
+    default: /* DUAL_SKEWED */
         y = c->last + 1;
         while (((y & 3) == 3) != (c->core == 1))
             y++;
+        break;
     }
     if (y >= (int)sh.opt->height)
         return -1;
@@ -282,7 +285,8 @@ int dual_render(const rt_scene *s, const rt_options *o, uint8_t *row_buf,
     sh.opt = o;
     emit_fn = emit;
     emit_ctx = ctx;
-    for (uint32_t *p = _sstack1; p < _estack1; p++)
+    /* Addresses as integers: the symbols are distinct C objects. */
+    for (uintptr_t p = (uintptr_t)_sstack1; p < (uintptr_t)_estack1; p += 4)
         *(volatile uint32_t *)p = STACK1_PAINT;
     __asm__ volatile("dsb" ::: "memory");
     if (FW_CORE1_START)
@@ -309,10 +313,11 @@ int dual_render(const rt_scene *s, const rt_options *o, uint8_t *row_buf,
 
 int dual_report(size_t guard)
 {
-    const uint32_t *p = _sstack1 + STACK1_SKIP_WORDS;
-    while (p < _estack1 && *(const volatile uint32_t *)p == STACK1_PAINT)
-        p++;
-    const size_t used = (size_t)((uintptr_t)_estack1 - (uintptr_t)p);
+    const uintptr_t top = (uintptr_t)_estack1;
+    uintptr_t p = (uintptr_t)(_sstack1 + STACK1_SKIP_WORDS);
+    while (p < top && *(const volatile uint32_t *)p == STACK1_PAINT)
+        p += 4;
+    const size_t used = (size_t)(top - p);
     const size_t size = (size_t)((uintptr_t)_estack1 - (uintptr_t)_sstack1);
     port_log_value("core1_rows", sh.rows1);
     port_log_value("stack_bytes_core1", used);
