@@ -7,7 +7,9 @@
 #
 # Boards (mk/boards/*.mk): an385 (Cortex-M3), m0 (Cortex-M0 code on
 # mps2-an385), microbit (nRF51, Cortex-M0, 16 KB RAM), an505 (Cortex-M33),
-# rv32 (QEMU virt), lm3s6965 (Cortex-M3 with a 128x64 OLED; mk/oled.mk).
+# an521 (two Cortex-M33 rendering together; port/baremetal/dual.c, and
+# mk/dual.mk for each core's count), rv32 (QEMU virt), lm3s6965 (Cortex-M3
+# with a 128x64 OLED; mk/oled.mk).
 # WIDTH, HEIGHT and SPP of 0 mean "the scene's default"; ADAPTIVE=T
 # (1..255, with SPP > 1) turns on adaptive anti-aliasing (docs/effects.md);
 # DRAFT=T (1..255) a draft render, traced at every other pixel and
