@@ -90,9 +90,8 @@ for s in $SCENES; do
             stacks="$stacks $(group "$(fig "$two.log" stack_bytes_core1)") |
 "
         else
-            row="$row $r |"
+            row="$row $(group "$busier") ($r) |"
         fi
-        row="$row"
     done
     rows="$rows$row $same |
 "
@@ -120,7 +119,7 @@ echo "$( [ "$FIRST" = 0 ] && echo "the shared counter (FW_HANDOUT=0)" ||
     echo "hand-out FW_HANDOUT=$FIRST")."
 echo
 printf '| scene | an505 | core 0 | core 0 waiting | core 1 | core 1 waiting | core 1 rows | busier / one core |'
-for h in $others; do printf ' FW_HANDOUT=%s |' "$h"; done
+for h in $others; do printf ' busier core, FW_HANDOUT=%s |' "$h"; done
 echo ' same bytes |'
 printf '|---|---:|---:|---:|---:|---:|---:|---:|'
 for h in $others; do printf -- '---:|'; done
