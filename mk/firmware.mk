@@ -395,14 +395,16 @@ qemu: $(FW_ELF) $(if $(filter uart,$(OUTPUT)),fw-host-tool)
 
 # Flash holds .text, .rodata (with the scene, as tables or text),
 # .ARM.exidx and the initial .data; RAM holds .data, .bss and the reserved
-# stack.
+# stack (on a two-core board, a stack for each core).
 size: $(FW_ELF)
 	$(Q)$(FW_SIZE) -A $< | awk -v board=$(BOARD) ' \
 	    $$1 == ".text" { t = $$2 } $$1 == ".rodata" { r = $$2 } \
 	    $$1 == ".ARM.exidx" { x = $$2 } $$1 == ".data" { d = $$2 } \
 	    $$1 == ".bss" { b = $$2 } $$1 == ".stack" { s = $$2 } \
+	    $$1 == ".stack1" { s1 = $$2 } \
 	    END { \
 	        printf "%s: flash %d bytes (text %d, rodata %d, exidx %d, data %d)\n", \
 	            board, t + r + x + d, t, r, x, d; \
-	        printf "%s: ram %d bytes (data %d, bss %d), stack %d reserved, total %d\n", \
-	            board, d + b, d, b, s, d + b + s }'
+	        printf "%s: ram %d bytes (data %d, bss %d), stack %d reserved%s, total %d\n", \
+	            board, d + b, d, b, s, s1 ? sprintf(" (and %d for core 1)", s1) : "", \
+	            d + b + s + s1 }'

@@ -8,7 +8,7 @@
 # virtual CPU), the busier core over the single core, for each hand-out
 # (port/baremetal/dual.c: 0 the shared counter, 1 the fixed interleave),
 # whether the image has the an505's bytes, each core's stack, and the
-# flash of both builds. Written to docs/dual-core.md (or --out FILE).
+# flash and RAM of both builds. Written to docs/dual-core.md (or --out FILE).
 #
 #   tools/dual_table.sh [--size WxH] [--scenes "a.scene b.scene"]
 #                       [--handouts "0 1"] [--out FILE] [--check]
@@ -44,9 +44,9 @@ fig() { awk -v n="$2" '$1 == n { v = $2 } END { print v }' "$1"; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.3f", a / b }'; }
 # group N: 1234567 -> 1,234,567.
 group() { echo "$1" | sed -E ':a; s/([0-9])([0-9]{3})($|,)/\1,\2\3/; ta'; }
-flash() { # board build: flash bytes of `make size`
-    $MAKE -s size BOARD="$1" FW_BUILD="$2" "${@:3}" |
-        sed -nE 's/.*flash ([0-9]+) bytes.*/\1/p'
+sizes() { # board build [make args]: "flash ram stack" bytes, make size
+    $MAKE -s size BOARD="$1" FW_BUILD="$2" "${@:3}" | tr '\n' ' ' |
+        sed -nE 's/.*flash ([0-9]+) bytes.* ram ([0-9]+) bytes.*stack ([0-9]+) reserved.*/\1 \2 \3/p'
 }
 
 fail=0
@@ -97,9 +97,14 @@ for s in $SCENES; do
 "
 done
 
-f1=$(flash an505 "$B/an505-seed" SCENE=scenes/seed.scene WIDTH=$W HEIGHT=$H SPP=1)
-f2=$(flash an521 "$B/an521-h$FIRST-seed" SCENE=scenes/seed.scene WIDTH=$W \
-    HEIGHT=$H SPP=1 FW_DEFS="-DFW_HANDOUT=$FIRST")
+read -r f1 r1 s1 <<<"$(sizes an505 "$B/an505-seed" SCENE=scenes/seed.scene \
+    WIDTH=$W HEIGHT=$H SPP=1)"
+read -r f2 r2 s2 <<<"$(sizes an521 "$B/an521-h$FIRST-seed" \
+    SCENE=scenes/seed.scene WIDTH=$W HEIGHT=$H SPP=1 \
+    FW_DEFS="-DFW_HANDOUT=$FIRST")"
+c1s=$($MAKE -s size BOARD=an521 FW_BUILD="$B/an521-h$FIRST-seed" \
+    SCENE=scenes/seed.scene WIDTH=$W HEIGHT=$H SPP=1 \
+    FW_DEFS="-DFW_HANDOUT=$FIRST" | sed -nE 's/.*and ([0-9]+) for core 1.*/\1/p')
 
 others=""
 for h in $HANDOUTS; do [ "$h" = "$FIRST" ] || others="$others $h"; done
@@ -136,11 +141,17 @@ echo "| scene | an505 | an521 core 0 | an521 core 1 |"
 echo "|---|---:|---:|---:|"
 printf '%s' "$stacks"
 echo
-echo "## Flash (\`make size\`, the seed scene)"
+echo "## Flash and RAM (\`make size\`, the seed scene)"
 echo
-echo "| an505 | an521 | difference |"
-echo "|---:|---:|---:|"
-echo "| $(group "$f1") | $(group "$f2") | $(group $((f2 - f1))) |"
+echo "Flash is text, rodata and data; RAM is data and bss (the row buffers),"
+echo "without the stacks: $(group "$s1") bytes on the an505, $(group "$s2") and"
+echo "$(group "$c1s") on the an521's cores (the linker scripts' STACK_SIZE and"
+echo "STACK1_SIZE)."
+echo
+echo "| an505 flash | an521 flash | difference | an505 RAM | an521 RAM |"
+echo "|---:|---:|---:|---:|---:|"
+echo "| $(group "$f1") | $(group "$f2") | $(group $((f2 - f1))) |" \
+    "$(group "$r1") | $(group "$r2") |"
 } >"$OUT.tmp"
 mv -f "$OUT.tmp" "$OUT"
 echo "wrote $OUT"
