@@ -180,7 +180,8 @@ if [ -z "$data" ]; then
     bad "docs/stack.md has no data block (run make stack)"
 else
     ok
-    for b in $(cd mk/boards && ls *.mk | sed 's/\.mk$//'); do
+    # One-core boards (a two-core board's stacks: docs/dual-core.md).
+    for b in $(cd mk/boards && grep -L 'FW_CORES=2' *.mk | sed 's/\.mk$//'); do
         for sc in scenes/*.scene; do
             echo "$data" | grep -q "^stack $b $(basename "$sc" .scene) " && ok ||
                 bad "docs/stack.md has no figure for $sc on $b (run make stack)"
@@ -361,8 +362,9 @@ check_fig "docs/porting.md: lm3s6965 flash" "$(pq "$re" 1)" "$lm_f"
 check_fig "docs/porting.md: an385 flash" "$(pq "$re" 2)" "$an_f"
 check_fig "docs/porting.md: the driver's flash" "$(pq "$re" 3)" "$((lm_f - an_f))"
 
-# README's board table: each row against its board's tables row.
-boards=$(cd mk/boards && ls *.mk | sed 's/\.mk$//')
+# README's board table: each row against its board's tables row (a
+# two-core board has none: its figures are docs/dual-core.md's, below).
+boards=$(cd mk/boards && grep -L 'FW_CORES=2' *.mk | sed 's/\.mk$//')
 for b in $boards; do
     row=$(grep -E "^\| $b \(" README.md | head -n 1)
     if [ -z "$row" ]; then
@@ -730,6 +732,42 @@ spk=$(echo "$pov" | awk '$3 > 0 { printf "%s %s;", $1, $3 }')
 [ "$spk" = "tests/pov/glass_spheres.scene 1;" ] &&
     tr '\n' ' ' <docs/render-model.md | tr -s ' ' | grep -qF 'with no speckle (one allowed in the glass scene)' && ok ||
     bad "docs/render-model.md allows one speckle in the glass scene; tests/suite_povray.sh allows '$spk'"
+
+# docs/dual-core.md (make dual-table): each ratio follows the figures in
+# its row, the targets hold (the busier core at most 0.6 of the an505 on
+# every scene and 0.55 on the seed, the same bytes, flash within 4 KB of
+# the an505), the counter's busier core below the interleave's as
+# docs/porting.md says, and porting.md's poll bound is dual.c's.
+if [ -f docs/dual-core.md ]; then
+    awk -F'|' '
+        function n(i,   v) { v = $i; sub(/\(.*/, "", v); gsub(/[ ,*]/, "", v); return v }
+        /^\| [a-z]+ \| .*\*\*[0-9.]+\*\*/ {
+            rows++; one = n(3); c0 = n(4); c1 = n(6); r = n(9)
+            b = c0 > c1 ? c0 : c1
+            want = sprintf("%.3f", b / one)
+            if (r != want) printf "FAILED: docs/dual-core.md: %s reads %s, its figures give %s\n", n(2), r, want
+            else if (r + 0 > (n(2) == "seed" ? 0.55 : 0.6)) printf "FAILED: docs/dual-core.md: %s at %s misses its target\n", n(2), r
+            else if (n(NF - 1) != "yes") printf "FAILED: docs/dual-core.md: %s is not the same bytes\n", n(2)
+            else if (NF == 12 && b >= (o = n(10)) + 0) printf "FAILED: docs/dual-core.md: %s: the interleave (%s) balances as well as the counter (%d); docs/porting.md says it does not\n", n(2), o, b
+            else print "ok" }
+        /^\| [0-9,]+ \| [0-9,]+ \| [0-9,]+ \|/ {
+            flash++; d = n(3) - n(2)
+            if (d != n(4)) printf "FAILED: docs/dual-core.md: flash difference %s, its figures give %d\n", n(4), d
+            else if (d > 4096) printf "FAILED: docs/dual-core.md: the an521 is %d bytes over the an505, more than 4 KB\n", d
+            else print "ok" }
+        END { if (rows != '"$(ls scenes/*.scene | wc -l)"' || flash != 1)
+                  printf "FAILED: docs/dual-core.md: %d scene rows, %d flash rows (make dual-table)\n", rows, flash }
+    ' docs/dual-core.md >"$tmp/dual" 2>&1
+    while IFS= read -r line; do
+        case $line in ok) ok ;; *) fail=$((fail + 1)); echo "$line" ;; esac
+    done <"$tmp/dual"
+    polls=$(sed -nE 's/^#define DUAL_START_POLLS ([0-9]+)u?$/\1/p' port/baremetal/dual.c)
+    check_fig "docs/porting.md: the polls before core 1 counts as not started" \
+        "$(tr '\n' ' ' <docs/porting.md | tr -s ' ' | sed -nE 's/.*within ([0-9,]+) polls \(a count.*/\1/p')" \
+        "$polls"
+else
+    bad "docs/dual-core.md is missing (make dual-table)"
+fi
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
