@@ -9,8 +9,9 @@
 # two-core board's renders are tests/suite_dual.sh's);
 # each board's instruction counter is exact (a loop of known length); a
 # stack overflow ends the run with a fault code instead of hanging it; a
-# bad scene fails a PRUNE=1 build on the host with its file:line:col, and a PRUNE=0 firmware exits 2 with a message; the M0
-# images use no soft-float helpers; and the micro:bit build, parser and
+# bad scene fails a PRUNE=1 build on the host with its file:line:col, and
+# a PRUNE=0 firmware exits 2 with a message; the M0 images use no
+# soft-float helpers; and the micro:bit build, parser and
 # rt_scene in RAM, fits in its 16 KB and renders the seed scene at 320x240.
 #
 # Boards run in parallel, each with its own build/<board>/ directory. A
