@@ -199,7 +199,7 @@ rt_status rt_parse_material_ref(rt_lex *p, const rt_scene *s,
 
 /* ---- Objects ------------------------------------------------------------ */
 
-/* What each object field sets: F_A the first point (centre, corner, min
+/* What each object field sets: F_A the first point (center, corner, min
  * or base), F_B and F_C the second and third vectors (edge1 and edge2, or
  * max), F_R the radius, F_H the height. */
 enum { F_A, F_B, F_C, F_R, F_H, F_MAT, F_OPEN, F_CAPS };
@@ -293,12 +293,15 @@ static rt_status check_shape(rt_lex *p, const rt_lex_token *kw,
             return degenerate(p, &at[1], nm, "max y must be > min y");
         if (hi.z <= lo.z)
             return degenerate(p, &at[1], nm, "max z must be > min z");
+    } else if (o->kind == RT_SPHERE) {
+        if (o->u.sphere.radius <= 0)
+            return degenerate(p, &at[key_of(sp, F_R)], nm,
+                              "radius must be > 0");
     } else {
-        const fx_t r = *fx_field(o, F_R);
+        const fx_t r = o->u.upright.radius, h = o->u.upright.height;
         if (r <= 0)
             return degenerate(p, &at[key_of(sp, F_R)], nm,
                               "radius must be > 0");
-        const fx_t h = o->kind != RT_SPHERE ? o->u.upright.height : 1;
         if (h <= 0)
             return degenerate(p, &at[key_of(sp, F_H)], nm,
                               "height must be > 0");

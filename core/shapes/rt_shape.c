@@ -121,5 +121,5 @@ fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *p,
     default:
         break;
     }
-    return o->u.quad.normal; /* a removed kind is never hit */
+    return o->u.quad.normal; /* a quad's; a removed kind is never hit */
 }
