@@ -93,7 +93,7 @@ static int scene_in_range(const rt_scene *s)
     for (unsigned i = 0; i < s->n_objects; i++)
         if (s->obj[i].material >= s->n_materials ||
             s->obj[i].kind >= RT_KIND_COUNT ||
-            (s->obj[i].kind == RT_MESH && !s->obj[i].mesh))
+            (s->obj[i].kind == RT_MESH && !s->obj[i].u.mesh.tables))
             return 0;
     return 1;
 }
