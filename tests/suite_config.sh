@@ -131,16 +131,16 @@ else
 fi
 
 # Matching configurations link and run cleanly.
-app default && runs 20144 "default capacities" ||
+app default && runs 19120 "default capacities" ||
     bad "default application, default core: $(head -c 400 "$tmp/link.log")"
-app small $SMALL && runs 3264 "-D capacities" ||
+app small $SMALL && runs 3136 "-D capacities" ||
     bad "-D capacities on both sides: $(head -c 400 "$tmp/link.log")"
 app named '-DRT_CONFIG_FILE="small_conf.h"' -I"$tmp/named" &&
-    runs 3264 "RT_CONFIG_FILE" ||
+    runs 3136 "RT_CONFIG_FILE" ||
     bad "RT_CONFIG_FILE on both sides: $(head -c 400 "$tmp/link.log")"
-app found -I"$tmp/conf" && runs 3264 "fixtrace_conf.h" ||
+app found -I"$tmp/conf" && runs 3136 "fixtrace_conf.h" ||
     bad "fixtrace_conf.h on both sides: $(head -c 400 "$tmp/link.log")"
-app found -DRT_USE_CONF_FILE -I"$tmp/conf" && runs 3264 "RT_USE_CONF_FILE" ||
+app found -DRT_USE_CONF_FILE -I"$tmp/conf" && runs 3136 "RT_USE_CONF_FILE" ||
     bad "RT_USE_CONF_FILE: $(head -c 400 "$tmp/link.log")"
 # The configuration file and -D options may not disagree.
 if $CC $CFLAGS $CORE_INC -I"$tmp/conf" -DRT_MAX_OBJECTS=8 -c core/scene/rt_scene.c \

@@ -381,7 +381,7 @@ static test_mesh make_at(const char *name, int torus, double scale,
     free(vn);
     free(tri);
     tm.o.kind = RT_MESH;
-    tm.o.mesh = tm.m;
+    tm.o.u.mesh.tables = tm.m;
     CHECK_EQ(rt_object_prepare(&tm.o), RT_OK);
     return tm;
 }

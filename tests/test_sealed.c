@@ -44,19 +44,20 @@ static void shape(rt_object *o, unsigned k, double s, double x, double y,
     o->kind = (uint8_t)k;
     o->material = (uint8_t)material;
     o->caps = RT_CAP_BOTTOM | RT_CAP_TOP;
-    o->r = D2F(s);
-    o->h = D2F(s * uni(0.5, 2));
     if (k == RT_SPHERE) {
-        o->a = v3(x, y + s, z);
+        o->u.sphere.center = v3(x, y + s, z);
+        o->u.sphere.radius = D2F(s);
     } else if (k == RT_BOX) {
-        o->a = v3(x - s, y, z - s * uni(0.3, 1));
-        o->b = v3(x + s * uni(0.3, 1), y + s * uni(0.5, 2), z + s);
+        o->u.box.min = v3(x - s, y, z - s * uni(0.3, 1));
+        o->u.box.max = v3(x + s * uni(0.3, 1), y + s * uni(0.5, 2), z + s);
     } else if (k == RT_QUAD) { /* a wall piece, upright or tilted */
-        o->a = v3(x - s, y, z);
-        o->b = v3(2 * s, 0, uni(-s, s));
-        o->c = v3(uni(-s, s), 2 * s, uni(-s, s));
+        o->u.quad.corner = v3(x - s, y, z);
+        o->u.quad.edge1 = v3(2 * s, 0, uni(-s, s));
+        o->u.quad.edge2 = v3(uni(-s, s), 2 * s, uni(-s, s));
     } else {
-        o->a = v3(x, y, z);
+        o->u.upright.base = v3(x, y, z);
+        o->u.upright.radius = D2F(s);
+        o->u.upright.height = D2F(s * uni(0.5, 2));
     }
 }
 
@@ -70,9 +71,9 @@ static void random_scene(rt_scene *s)
     rt_object *o = s->obj;
     memset(o, 0, sizeof *o);
     o->kind = RT_QUAD; /* the floor, 40 x 40 at y = 0 */
-    o->a = v3(-20, 0, -20);
-    o->b = v3(0, 0, 40);
-    o->c = v3(40, 0, 0);
+    o->u.quad.corner = v3(-20, 0, -20);
+    o->u.quad.edge1 = v3(0, 0, 40);
+    o->u.quad.edge2 = v3(40, 0, 0);
     const double size = exp(uni(log(0.05), log(4)));
     const unsigned kinds[] = { RT_SPHERE, RT_BOX, RT_CYLINDER, RT_CONE };
     shape(&s->obj[1], kinds[th_rnd64(&rng) % 4], size, uni(-3, 3), gap(),
@@ -82,7 +83,7 @@ static void random_scene(rt_scene *s)
         const rt_object *g = &s->obj[1];
         const double reach = size * 2.2 + gap(); /* past g's box */
         const double sj = exp(uni(log(0.05), log(4)));
-        double x = g->a.x / 65536.0, z = g->a.z / 65536.0;
+        double x = g->bc.x / 65536.0, z = g->bc.z / 65536.0;
         switch (th_rnd64(&rng) % 4) {
         case 0: x += reach + sj; break;
         case 1: x -= reach + sj; break;
@@ -94,8 +95,9 @@ static void random_scene(rt_scene *s)
     }
     for (unsigned j = 0; j < s->n_objects; j++)
         if (rt_object_prepare(&s->obj[j]) != RT_OK)
-            s->obj[j].kind = RT_SPHERE, s->obj[j].r = FX_ONE,
-            s->obj[j].a = v3(30, 30, 30), rt_object_prepare(&s->obj[j]);
+            s->obj[j].kind = RT_SPHERE, s->obj[j].u.sphere.radius = FX_ONE,
+            s->obj[j].u.sphere.center = v3(30, 30, 30),
+            rt_object_prepare(&s->obj[j]);
 }
 
 /* A point of object o's bounding box, for aiming. */

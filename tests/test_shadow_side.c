@@ -35,23 +35,23 @@ static void random_quad(rt_object *o)
     memset(o, 0, sizeof *o);
     o->kind = RT_QUAD;
     const double s = exp(uni(log(0.01), log(200)));
-    o->a = v3(uni(-50, 50), uni(-50, 50), uni(-50, 50));
+    o->u.quad.corner = v3(uni(-50, 50), uni(-50, 50), uni(-50, 50));
     switch (th_rnd64(&rng) % 4) {
     case 0:
-        o->b = v3(0, 0, s);
-        o->c = v3(s * uni(0.2, 2), 0, 0);
+        o->u.quad.edge1 = v3(0, 0, s);
+        o->u.quad.edge2 = v3(s * uni(0.2, 2), 0, 0);
         break;
     case 1:
-        o->b = v3(s, 0, 0);
-        o->c = v3(0, s * uni(0.2, 2), 0);
+        o->u.quad.edge1 = v3(s, 0, 0);
+        o->u.quad.edge2 = v3(0, s * uni(0.2, 2), 0);
         break;
     case 2:
-        o->b = v3(0, s, 0);
-        o->c = v3(0, 0, s * uni(0.2, 2));
+        o->u.quad.edge1 = v3(0, s, 0);
+        o->u.quad.edge2 = v3(0, 0, s * uni(0.2, 2));
         break;
     default:
-        o->b = v3(uni(-s, s), uni(-s, s), uni(-s, s));
-        o->c = v3(uni(-s, s), uni(-s, s), uni(-s, s));
+        o->u.quad.edge1 = v3(uni(-s, s), uni(-s, s), uni(-s, s));
+        o->u.quad.edge2 = v3(uni(-s, s), uni(-s, s), uni(-s, s));
         break;
     }
     if (rt_object_prepare(o) != RT_OK)
@@ -69,8 +69,10 @@ static fx_vec3 jitter(fx_vec3 p)
 /* A point of quad o's plane (inside the quad or beyond its edges). */
 static fx_vec3 plane_point(const rt_object *o)
 {
-    return fx_v3_add(o->a, fx_v3_add(fx_v3_scale(o->b, D2F(uni(-1, 2))),
-                                     fx_v3_scale(o->c, D2F(uni(-1, 2)))));
+    const rt_quad *q = &o->u.quad;
+    return fx_v3_add(q->corner,
+                     fx_v3_add(fx_v3_scale(q->edge1, D2F(uni(-1, 2))),
+                               fx_v3_scale(q->edge2, D2F(uni(-1, 2)))));
 }
 
 int main(void)
@@ -95,7 +97,7 @@ int main(void)
         const double off = where == 0   ? uni(-3e-4, 3e-4)
                            : where == 1 ? uni(0.004, 0.02)
                                         : uni(-100, 100);
-        lp = fx_v3_madd_d(lp, q->n, D2F(off));
+        lp = fx_v3_madd_d(lp, q->u.quad.normal, D2F(off));
         s.n_lights = 1;
         s.light[0].pos = lp;
         rt_options_from_scene(&opt, &s);

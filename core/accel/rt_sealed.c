@@ -68,16 +68,20 @@ static fx_t extent(const rt_object *o, span3 *b)
 {
     fx_t mag = 0;
     for (unsigned k = 0; k < 3; k++) {
-        const fx_t c = comp(o->bc, k), a = comp(o->a, k);
-        const fx_t e1 = comp(o->b, k), e2 = comp(o->c, k);
+        const fx_t c = comp(o->bc, k);
         fx_t lo = c - o->br, hi = c + o->br; /* a sphere's is exact */
         if (o->kind == RT_BOX) {
-            lo = a;
-            hi = e1;
+            lo = comp(o->u.box.min, k);
+            hi = comp(o->u.box.max, k);
         } else if (o->kind == RT_CYLINDER || o->kind == RT_CONE) {
-            lo = k == 1 ? a : a - o->r;
-            hi = k == 1 ? a + o->h : a + o->r;
+            const rt_upright *up = &o->u.upright;
+            const fx_t a = comp(up->base, k);
+            lo = k == 1 ? a : a - up->radius;
+            hi = k == 1 ? a + up->height : a + up->radius;
         } else if (o->kind == RT_QUAD) { /* the four corners */
+            const fx_t a = comp(o->u.quad.corner, k);
+            const fx_t e1 = comp(o->u.quad.edge1, k);
+            const fx_t e2 = comp(o->u.quad.edge2, k);
             lo = a + (e1 < 0 ? e1 : 0) + (e2 < 0 ? e2 : 0);
             hi = a + (e1 > 0 ? e1 : 0) + (e2 > 0 ? e2 : 0);
         }

@@ -33,19 +33,20 @@ static inline int rt_passes_by(const rt_object *o, const rt_ray *r,
            fx_cross_beyond(oy, r->d.z, oz, r->d.y, o->br, near);
 }
 
-/* (a - p).n for quad o (corner a, unit normal n), exact, with 16 +
- * FX_UBITS fraction bits: negative when p lies on the side n points to,
- * 0 on the plane. small: p is fx_v3_small. A flat quad's dist is n.a
- * exactly; a small quad and point have a - p within 32 bits. */
+/* (corner - p).normal for quad o, exact, with 16 + FX_UBITS fraction
+ * bits: negative when p lies on the side the normal points to, 0 on the
+ * plane. small: p is fx_v3_small. A flat quad's dist is normal.corner
+ * exactly; a small quad and point have corner - p within 32 bits. */
 static inline int64_t rt_quad_num(const rt_object *o, fx_vec3 p, int small)
 {
-    if (o->flat)
-        return (int64_t)o->dist * FX_UONE - fx_imul64(p.y, o->n.y);
+    const rt_quad *qd = &o->u.quad;
+    if (qd->flat)
+        return (int64_t)qd->dist * FX_UONE - fx_imul64(p.y, qd->normal.y);
     if (o->small && small)
-        return fx_imul64(o->a.x - p.x, o->n.x) +
-               fx_imul64(o->a.y - p.y, o->n.y) +
-               fx_imul64(o->a.z - p.z, o->n.z);
-    return fx_pd_dot_diff_raw(o->a, p, o->n);
+        return fx_imul64(qd->corner.x - p.x, qd->normal.x) +
+               fx_imul64(qd->corner.y - p.y, qd->normal.y) +
+               fx_imul64(qd->corner.z - p.z, qd->normal.z);
+    return fx_pd_dot_diff_raw(qd->corner, p, qd->normal);
 }
 
 /* rt_quad_num out of line, for the shadow rays' culling. */

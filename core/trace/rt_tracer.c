@@ -44,9 +44,10 @@ void rt_tracer_init(rt_tracer *tr, const rt_scene *s, const rt_options *o)
             const rt_object *q = &s->obj[i];
             /* A floor's own test rejects a ray off its side as soon. */
             if (q->kind != RT_QUAD ||
-                (q->flat && (q->n.y == FX_UONE || q->n.y == -FX_UONE)))
+                (q->u.quad.flat && (q->u.quad.normal.y == FX_UONE ||
+                                    q->u.quad.normal.y == -FX_UONE)))
                 continue;
-            /* (a - lp).n: negative with the light in front. */
+            /* (corner - lp).normal: negative with the light in front. */
             const int64_t num = rt_quad_side(q, lp, fx_v3_small(lp));
             const uint32_t bit = (uint32_t)1 << (i % 32);
             if (num < -RT_SIDE_MARGIN)
