@@ -33,22 +33,6 @@ static inline int rt_passes_by(const rt_object *o, const rt_ray *r,
            fx_cross_beyond(oy, r->d.z, oz, r->d.y, o->br, near);
 }
 
-/* (corner - p).normal for quad o, exact, with 16 + FX_UBITS fraction
- * bits: negative when p lies on the side the normal points to, 0 on the
- * plane. small: p is fx_v3_small. A flat quad's dist is normal.corner
- * exactly; a small quad and point have corner - p within 32 bits. */
-static inline int64_t rt_quad_num(const rt_object *o, fx_vec3 p, int small)
-{
-    const rt_quad *qd = &o->u.quad;
-    if (qd->flat)
-        return (int64_t)qd->dist * FX_UONE - fx_imul64(p.y, qd->normal.y);
-    if (o->small && small)
-        return fx_imul64(qd->corner.x - p.x, qd->normal.x) +
-               fx_imul64(qd->corner.y - p.y, qd->normal.y) +
-               fx_imul64(qd->corner.z - p.z, qd->normal.z);
-    return fx_pd_dot_diff_raw(qd->corner, p, qd->normal);
-}
-
 /* rt_quad_num out of line, for the shadow rays' culling. */
 int64_t rt_quad_side(const rt_object *o, fx_vec3 p, int small);
 
