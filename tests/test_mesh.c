@@ -431,7 +431,7 @@ static void test_limit(void)
         rt_object o;
         memset(&o, 0, sizeof o);
         o.kind = RT_MESH;
-        o.mesh = m;
+        o.u.mesh.tables = m;
         CHECK_EQ(rt_object_prepare(&o), RT_OK);
         /* Straight down onto the middle of a cell: t = 5 exactly. */
         rt_ray r;
