@@ -32,8 +32,11 @@ run_part() {
     local rc=$?
     # This subshell's children's processor time (user + system): with a
     # part's seconds, what make test's time is made of.
+    # (times itself in this shell: in a pipe or $(...) it would report a
+    # subshell's.)
     local cpu
-    cpu=$(times | tail -n 1 | awk '{ s = 0
+    times >"$log_dir/$name.times"
+    cpu=$(tail -n 1 "$log_dir/$name.times" | awk '{ s = 0
         for (i = 1; i <= 2; i++) { split($i, t, /[ms]/); s += 60 * t[1] + t[2] }
         printf "%d", s + 0.5 }')
     # Renamed into place, so the report never reads half a line.
