@@ -51,6 +51,7 @@ include mk/test.mk
 -include mk/accuracy.mk
 -include mk/oled.mk
 -include mk/profile.mk
+-include mk/dual.mk
 -include mk/web.mk
 
 .PHONY: all clean print-%

@@ -7,7 +7,9 @@
 #
 # Boards (mk/boards/*.mk): an385 (Cortex-M3), m0 (Cortex-M0 code on
 # mps2-an385), microbit (nRF51, Cortex-M0, 16 KB RAM), an505 (Cortex-M33),
-# rv32 (QEMU virt), lm3s6965 (Cortex-M3 with a 128x64 OLED; mk/oled.mk).
+# an521 (two Cortex-M33 rendering together; port/baremetal/dual.c, and
+# mk/dual.mk for each core's count), rv32 (QEMU virt), lm3s6965 (Cortex-M3
+# with a 128x64 OLED; mk/oled.mk).
 # WIDTH, HEIGHT and SPP of 0 mean "the scene's default"; ADAPTIVE=T
 # (1..255, with SPP > 1) turns on adaptive anti-aliasing (docs/effects.md);
 # DRAFT=T (1..255) a draft render, traced at every other pixel and
@@ -319,6 +321,7 @@ $(patsubst %.c,$(FW_BUILD)/%.o,$(foreach n,$(FW_COLD_SRC),$(filter %/$(n).c,$(CO
 # libc.c must not have its loops turned back into calls to itself.
 $(FW_BUILD)/port/baremetal/libc.o: FW_EXTRA := -fno-tree-loop-distribute-patterns
 $(FW_BUILD)/port/baremetal/main.o: $(FW_CONFIG)
+$(FW_BUILD)/port/baremetal/dual.o: $(FW_CONFIG)
 $(FW_BUILD)/port/baremetal/bringup.o: $(FW_CONFIG)
 $(FW_BUILD)/port/baremetal/out_uart.o: $(FW_CONFIG)
 
@@ -392,14 +395,16 @@ qemu: $(FW_ELF) $(if $(filter uart,$(OUTPUT)),fw-host-tool)
 
 # Flash holds .text, .rodata (with the scene, as tables or text),
 # .ARM.exidx and the initial .data; RAM holds .data, .bss and the reserved
-# stack.
+# stack (on a two-core board, a stack for each core).
 size: $(FW_ELF)
 	$(Q)$(FW_SIZE) -A $< | awk -v board=$(BOARD) ' \
 	    $$1 == ".text" { t = $$2 } $$1 == ".rodata" { r = $$2 } \
 	    $$1 == ".ARM.exidx" { x = $$2 } $$1 == ".data" { d = $$2 } \
 	    $$1 == ".bss" { b = $$2 } $$1 == ".stack" { s = $$2 } \
+	    $$1 == ".stack1" { s1 = $$2 } \
 	    END { \
 	        printf "%s: flash %d bytes (text %d, rodata %d, exidx %d, data %d)\n", \
 	            board, t + r + x + d, t, r, x, d; \
-	        printf "%s: ram %d bytes (data %d, bss %d), stack %d reserved, total %d\n", \
-	            board, d + b, d, b, s, d + b + s }'
+	        printf "%s: ram %d bytes (data %d, bss %d), stack %d reserved%s, total %d\n", \
+	            board, d + b, d, b, s, s1 ? sprintf(" (and %d for core 1)", s1) : "", \
+	            d + b + s + s1 }'

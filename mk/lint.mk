@@ -42,7 +42,8 @@ performance-*,portability-*,\
 -clang-analyzer-valist.Uninitialized,\
 -misc-no-recursion
 
-LINT_RESERVED_OK := _start;_sidata;_sdata;_edata;_sbss;_ebss;_sstack;_estack
+LINT_RESERVED_OK := _start;_sidata;_sdata;_edata;_sbss;_ebss;_sstack;_estack;\
+    _sstack1;_estack1
 LINT_TIDY_CONFIG := {CheckOptions: [\
 {key: bugprone-signed-char-misuse.CharTypdefsToIgnore, value: int8_t},\
 {key: cert-str34-c.CharTypdefsToIgnore, value: int8_t},\
@@ -79,7 +80,7 @@ LINT_ARCH_m33 := --target=arm-none-eabi -mcpu=cortex-m33 -mthumb \
     -mfloat-abi=soft
 LINT_ARCH_rv32 := --target=riscv32-unknown-elf -march=rv32imac -mabi=ilp32
 lint_bm_arch = $(if $(filter %_rv32.c,$1),rv32,$(if $(filter \
-    %_an505.c,$1),m33,$(if $(filter %_an385.c %_microbit.c %_lm3s6965.c \
+    %_an505.c %_an521.c %/dual.c,$1),m33,$(if $(filter %_an385.c %_microbit.c %_lm3s6965.c \
     %_cortexm.c,$1),arm,arm rv32)))
 
 LINT_HOST_LOGS := $(LINT_HOST_SRC:%=$(LINT_BUILD)/%.log)

@@ -18,12 +18,13 @@ static void emit_dump(FILE *f, const rt_scene *s)
     static rt_scene c;
     memcpy(&c, s, sizeof c);
     for (unsigned k = 0; k < RT_MAX_OBJECTS; k++)
-        c.obj[k].mesh = NULL;
+        if (c.obj[k].kind == RT_MESH)
+            c.obj[k].u.mesh.tables = NULL;
     fwrite(&c, sizeof c, 1, f);
     for (unsigned k = 0; k < s->n_objects; k++) {
-        const rt_mesh *m = s->obj[k].mesh;
-        if (s->obj[k].kind != RT_MESH || !m)
+        if (s->obj[k].kind != RT_MESH || !s->obj[k].u.mesh.tables)
             continue;
+        const rt_mesh *m = s->obj[k].u.mesh.tables;
         rt_mesh h;
         memset(&h, 0, sizeof h);
         h.n_verts = m->n_verts;

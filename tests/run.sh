@@ -19,7 +19,7 @@ HOST_BUILD=${HOST_BUILD:-build/posix}
 export HOST_BUILD
 export FIXTRACE="$HOST_BUILD/fixtrace"
 JOBS=${TEST_JOBS:-$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)}
-pass=0 fail=0 skip=0
+pass=0 fail=0 skip=0 cpu_total=0
 skipped_parts=""
 log_dir="$HOST_BUILD/test-logs"
 mkdir -p "$log_dir"
@@ -29,16 +29,27 @@ run_part() {
     local name=$1; shift
     local start=$SECONDS
     "$@" >"$log_dir/$name.log" 2>&1
+    local rc=$?
+    # This subshell's children's processor time (user + system): with a
+    # part's seconds, what make test's time is made of.
+    # (times itself in this shell: in a pipe or $(...) it would report a
+    # subshell's.)
+    local cpu
+    times >"$log_dir/$name.times"
+    cpu=$(tail -n 1 "$log_dir/$name.times" | awk '{ s = 0
+        for (i = 1; i <= 2; i++) { split($i, t, /[ms]/); s += 60 * t[1] + t[2] }
+        printf "%d", s + 0.5 }')
     # Renamed into place, so the report never reads half a line.
-    echo "$? $((SECONDS - start))" >"$log_dir/$name.rc.tmp"
+    echo "$rc $((SECONDS - start)) $cpu" >"$log_dir/$name.rc.tmp"
     mv -f "$log_dir/$name.rc.tmp" "$log_dir/$name.rc"
 }
 
 # Adds up one part that has ended, and prints its line.
 report_part() {
     local name=$1
-    local log="$log_dir/$name.log" rc=1 secs=0 line
-    [ -f "$log_dir/$name.rc" ] && read -r rc secs <"$log_dir/$name.rc"
+    local log="$log_dir/$name.log" rc=1 secs=0 cpu=0 line
+    [ -f "$log_dir/$name.rc" ] && read -r rc secs cpu <"$log_dir/$name.rc"
+    cpu_total=$((cpu_total + ${cpu:-0}))
     line=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$log" | tail -n 1)
     local p=0 f=0 s=0
     if [ -n "$line" ]; then
@@ -62,8 +73,9 @@ report_part() {
     pass=$((pass + p)); fail=$((fail + f)); skip=$((skip + s))
     reported=$((reported + 1))
     local total=${#parts[@]}
-    printf '[%*d/%d] %-28s %6d passed %4d failed %3d skipped  (%ds)\n' \
-        "${#total}" "$reported" "$total" "$name" "$p" "$f" "$s" "$secs"
+    printf '[%*d/%d] %-28s %6d passed %4d failed %3d skipped  (%ds, %ds CPU)\n' \
+        "${#total}" "$reported" "$total" "$name" "$p" "$f" "$s" "$secs" \
+        "${cpu:-0}"
     if [ "$f" -gt 0 ]; then
         grep -E 'FAILED|error|Error' "$log" | head -n 20 | sed 's/^/    /'
         echo "    (full log: $log)"
@@ -92,7 +104,7 @@ done
 # Start order: longest last time first (NAME.rc keeps the seconds).
 order=$(for i in "${!parts[@]}"; do
     name=${parts[$i]%% *} secs=0
-    [ -f "$log_dir/$name.rc" ] && read -r _ secs <"$log_dir/$name.rc"
+    [ -f "$log_dir/$name.rc" ] && read -r _ secs _ <"$log_dir/$name.rc"
     echo "$secs $i"
 done | sort -k1,1nr -k2,2n | cut -d' ' -f2)
 for i in "${!parts[@]}"; do
@@ -132,6 +144,7 @@ while [ "$running" -gt 0 ]; do
 done
 wait
 report_ended
+echo "Processor time of all parts: ${cpu_total}s, ${SECONDS}s here"
 if [ -n "$skipped_parts" ]; then
     echo "Skipped parts (install the tool to run them):$skipped_parts"
 fi

@@ -104,17 +104,19 @@ static void finish(const rt_material *m)
 /* The shape of o alone, without closing brace, then its modifiers. */
 static void shape(const rt_object *o)
 {
-    fx_vec3 top = o->a;
-    top.y += o->h;
+    const rt_upright *up = &o->u.upright;
+    fx_vec3 top = up->base;
+    top.y += up->height;
     switch (o->kind) {
     case RT_SPHERE:
-        vec("sphere { ", o->a);
-        printf(", %.9g\n", d(o->r));
+        vec("sphere { ", o->u.sphere.center);
+        printf(", %.9g\n", d(o->u.sphere.radius));
         break;
     case RT_QUAD: {
-        double ax = d(o->a.x), ay = d(o->a.y), az = d(o->a.z);
-        double bx = d(o->b.x), by = d(o->b.y), bz = d(o->b.z);
-        double cx = d(o->c.x), cy = d(o->c.y), cz = d(o->c.z);
+        const rt_quad *q = &o->u.quad;
+        double ax = d(q->corner.x), ay = d(q->corner.y), az = d(q->corner.z);
+        double bx = d(q->edge1.x), by = d(q->edge1.y), bz = d(q->edge1.z);
+        double cx = d(q->edge2.x), cy = d(q->edge2.y), cz = d(q->edge2.z);
         printf("polygon { 5, <%.9g, %.9g, %.9g>, <%.9g, %.9g, %.9g>, "
                "<%.9g, %.9g, %.9g>, <%.9g, %.9g, %.9g>, <%.9g, %.9g, %.9g>\n",
                ax, ay, az, ax + bx, ay + by, az + bz, ax + bx + cx,
@@ -123,26 +125,26 @@ static void shape(const rt_object *o)
         break;
     }
     case RT_BOX:
-        vec("box { ", o->a);
-        vec(", ", o->b);
+        vec("box { ", o->u.box.min);
+        vec(", ", o->u.box.max);
         printf("\n");
         break;
     case RT_CYLINDER:
         if (o->caps == (RT_CAP_BOTTOM | RT_CAP_TOP) || o->caps == 0) {
-            vec("cylinder { ", o->a);
+            vec("cylinder { ", up->base);
             vec(", ", top);
-            printf(", %.9g%s\n", d(o->r), o->caps ? "" : " open");
+            printf(", %.9g%s\n", d(up->radius), o->caps ? "" : " open");
         } else {
-            vec("union { cylinder { ", o->a);
+            vec("union { cylinder { ", up->base);
             vec(", ", top);
-            printf(", %.9g open }\n", d(o->r));
-            vec("  disc { ", o->caps == RT_CAP_TOP ? top : o->a);
-            printf(", <0, 1, 0>, %.9g }\n", d(o->r));
+            printf(", %.9g open }\n", d(up->radius));
+            vec("  disc { ", o->caps == RT_CAP_TOP ? top : up->base);
+            printf(", <0, 1, 0>, %.9g }\n", d(up->radius));
         }
         break;
     default: /* RT_CONE */
-        vec("cone { ", o->a);
-        printf(", %.9g", d(o->r));
+        vec("cone { ", up->base);
+        printf(", %.9g", d(up->radius));
         vec(", ", top);
         printf(", 0%s\n", (o->caps & RT_CAP_BOTTOM) ? "" : " open");
         break;
@@ -195,7 +197,7 @@ int main(int argc, char **argv)
         const rt_object *o = &s.obj[i];
         const rt_material *m = &s.mat[o->material];
         shape(o);
-        pigment(m, o->a);
+        pigment(m, o->u.origin);
         finish(m);
         if (m->transparency > 0 || !s.shadows)
             printf("  no_shadow\n");

@@ -1,14 +1,17 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# The firmware on every QEMU board (an385, m0, microbit, an505, rv32), in
+# The firmware on every QEMU board (mk/boards/), in
 # both scene modes (mk/firmware.mk): rendering on the device gives the same
 # bytes as the host, for the seed scene as tables (PRUNE=1, the default: no
 # parser linked) and for one other scene as text parsed on the device
-# (PRUNE=0), and for a draft render of the seed (DRAFT=64), at 48x36;
+# (PRUNE=0), for a draft render of the seed (DRAFT=64) and for the meshes
+# as tables, at 48x36 (those three on the first board of each CPU; a
+# two-core board's renders are tests/suite_dual.sh's);
 # each board's instruction counter is exact (a loop of known length); a
-# stack overflow ends the run with a fault code instead of hanging it; a bad scene fails a PRUNE=1 build on the host with its
-# file:line:col, and a PRUNE=0 firmware exits 2 with a message; the M0
-# images use no soft-float helpers; and the micro:bit build, parser and
+# stack overflow ends the run with a fault code instead of hanging it; a
+# bad scene fails a PRUNE=1 build on the host with its file:line:col, and
+# a PRUNE=0 firmware exits 2 with a message; the M0 images use no
+# soft-float helpers; and the micro:bit build, parser and
 # rt_scene in RAM, fits in its 16 KB and renders the seed scene at 320x240.
 #
 # Boards run in parallel, each with its own build/<board>/ directory. A
@@ -137,19 +140,30 @@ run_board() {
     fi
     render "$(basename "$SEED" .scene) ${W}x$H tables" "$SEED" $W $H \
         "$tmp/seed.ppm"
-    render "$(basename "$OTHER" .scene) ${W}x$H text" "$OTHER" $W $H \
-        "$tmp/other.ppm" "$TIMEOUT" PRUNE=0
-    # A draft render (rt_options.draft) takes the same decisions on
-    # every board: the same bytes as the host's draft.
-    render "$(basename "$SEED" .scene) ${W}x$H draft 64" "$SEED" $W $H \
-        "$tmp/seed-draft.ppm" "$TIMEOUT" DRAFT=64
-    # The meshes as tables in flash, on every board they fit.
-    if fw firmware SCENE="$MESHES" WIDTH=$W HEIGHT=$H ||
-        ! grep -q "overflowed" "$tmp/$b.log"; then
-        render "$(basename "$MESHES" .scene) ${W}x$H tables" "$MESHES" $W $H \
-            "$tmp/meshes.ppm"
-    else
-        res "SKIPPED: $b $MESHES: its meshes do not fit the flash"
+    # The other renders exercise the core's code for a CPU, the same on
+    # every board built for it: only the first board of each CPU (its
+    # FW_CPU) renders them. A two-core board renders every scene in
+    # tests/suite_dual.sh.
+    case " $(first_of_cpu) " in
+    *" $b "*) ;;
+    *) echo "$b: the seed only (an earlier board has its CPU)" >>"$tmp/$b.info"
+       render_rest=0 ;;
+    esac
+    if [ "${render_rest:-1}" = 1 ]; then
+        render "$(basename "$OTHER" .scene) ${W}x$H text" "$OTHER" $W $H \
+            "$tmp/other.ppm" "$TIMEOUT" PRUNE=0
+        # A draft render (rt_options.draft) takes the same decisions on
+        # every board: the same bytes as the host's draft.
+        render "$(basename "$SEED" .scene) ${W}x$H draft 64" "$SEED" $W $H \
+            "$tmp/seed-draft.ppm" "$TIMEOUT" DRAFT=64
+        # The meshes as tables in flash, on every board they fit.
+        if fw firmware SCENE="$MESHES" WIDTH=$W HEIGHT=$H ||
+            ! grep -q "overflowed" "$tmp/$b.log"; then
+            render "$(basename "$MESHES" .scene) ${W}x$H tables" "$MESHES" $W $H \
+                "$tmp/meshes.ppm"
+        else
+            res "SKIPPED: $b $MESHES: its meshes do not fit the flash"
+        fi
     fi
 
     case $b in
@@ -307,6 +321,18 @@ for b in $all_boards; do
         boards="$boards $b"
     fi
 done
+
+# The first board (in $boards' order) of each CPU, and not a two-core one.
+first_of_cpu() {
+    local b cpu seen=" "
+    for b in $boards; do
+        grep -q 'FW_CORES=2' "mk/boards/$b.mk" && continue
+        cpu=$(sed -nE 's/^FW_CPU := //p' "mk/boards/$b.mk" | tr -d ' ')
+        case $seen in *" $cpu "*) continue ;; esac
+        seen="$seen$cpu "
+        echo "$b"
+    done
+}
 
 start=$SECONDS
 for b in $boards; do

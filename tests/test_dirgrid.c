@@ -43,15 +43,19 @@ static void random_object(rt_object *o, double spread)
     double z = uni(-spread, spread);
     o->kind = (uint8_t)(th_rnd64(&rng) % RT_MESH); /* the analytic kinds */
     o->caps = RT_CAP_BOTTOM | RT_CAP_TOP;
-    o->a = v3(x, y, z);
-    o->r = D2F(s);
-    o->h = D2F(s * uni(0.2, 3));
-    if (o->kind == RT_QUAD) {
-        o->b = v3(uni(-s, s), uni(-s, s), uni(-s, s));
-        o->c = v3(uni(-s, s), uni(-s, s), uni(-s, s));
+    o->u.origin = v3(x, y, z); /* any kind's first point */
+    const fx_t r = D2F(s), h = D2F(s * uni(0.2, 3));
+    if (o->kind == RT_SPHERE) {
+        o->u.sphere.radius = r;
+    } else if (o->kind == RT_QUAD) {
+        o->u.quad.edge1 = v3(uni(-s, s), uni(-s, s), uni(-s, s));
+        o->u.quad.edge2 = v3(uni(-s, s), uni(-s, s), uni(-s, s));
     } else if (o->kind == RT_BOX) {
-        o->b = v3(x + s * uni(0.1, 2), y + s * uni(0.1, 2),
-                  z + s * uni(0.1, 2));
+        o->u.box.max = v3(x + s * uni(0.1, 2), y + s * uni(0.1, 2),
+                          z + s * uni(0.1, 2));
+    } else {
+        o->u.upright.radius = r;
+        o->u.upright.height = h;
     }
     if (rt_object_prepare(o) != RT_OK)
         random_object(o, spread); /* degenerate draw: try again */
@@ -184,12 +188,16 @@ static double dot_d(const double a[3], const double b[3])
 static fx_vec3 quad_point(const rt_object *o, fx_vec3 m, fx_vec3 q)
 {
     const double s = 1.0 / 65536, us = 1.0 / FX_UONE;
-    const double n[3] = { o->n.x * us, o->n.y * us, o->n.z * us };
-    const double pu[3] = { o->pu.x * us, o->pu.y * us, o->pu.z * us };
-    const double pv[3] = { o->pv.x * us, o->pv.y * us, o->pv.z * us };
-    const double am[3] = { (o->a.x - (double)m.x) * s,
-                           (o->a.y - (double)m.y) * s,
-                           (o->a.z - (double)m.z) * s };
+    const rt_quad *qd = &o->u.quad;
+    const double n[3] = { qd->normal.x * us, qd->normal.y * us,
+                          qd->normal.z * us };
+    const double pu[3] = { qd->axis_u.x * us, qd->axis_u.y * us,
+                           qd->axis_u.z * us };
+    const double pv[3] = { qd->axis_v.x * us, qd->axis_v.y * us,
+                           qd->axis_v.z * us };
+    const double am[3] = { (qd->corner.x - (double)m.x) * s,
+                           (qd->corner.y - (double)m.y) * s,
+                           (qd->corner.z - (double)m.z) * s };
     const double qm[3] = { (q.x - (double)m.x) * s, (q.y - (double)m.y) * s,
                            (q.z - (double)m.z) * s };
     const double den = dot_d(qm, n);
@@ -198,11 +206,13 @@ static fx_vec3 quad_point(const rt_object *o, fx_vec3 m, fx_vec3 q)
         const double pa[3] = { f * qm[0] - am[0], f * qm[1] - am[1],
                                f * qm[2] - am[2] };
         const double u = dot_d(pa, pu), v = dot_d(pa, pv);
-        if (f > 0 && u >= 0 && u <= o->lu * s && v >= 0 && v <= o->lv * s)
-            return fx_v3_add(o->a, v3(pa[0], pa[1], pa[2]));
+        if (f > 0 && u >= 0 && u <= qd->len_u * s && v >= 0 &&
+            v <= qd->len_v * s)
+            return fx_v3_add(qd->corner, v3(pa[0], pa[1], pa[2]));
     }
-    return fx_v3_add(o->a, fx_v3_add(fx_v3_scale(o->b, D2F(uni(0, 1))),
-                                     fx_v3_scale(o->c, D2F(uni(0, 1)))));
+    return fx_v3_add(qd->corner,
+                     fx_v3_add(fx_v3_scale(qd->edge1, D2F(uni(0, 1))),
+                               fx_v3_scale(qd->edge2, D2F(uni(0, 1)))));
 }
 
 /* Camera rays from a random eye reflected in a mirror quad (object 0) as
@@ -232,10 +242,12 @@ static void mirror_trial(double spread, long *hits, long *missing,
     ++*grids;
     /* The eye's image, as the test finds it (double). */
     const double us = 1.0 / FX_UONE;
-    const double n[3] = { o->n.x * us, o->n.y * us, o->n.z * us };
-    const double ea[3] = { (s.cam.eye.x - (double)o->a.x) / 65536,
-                           (s.cam.eye.y - (double)o->a.y) / 65536,
-                           (s.cam.eye.z - (double)o->a.z) / 65536 };
+    const rt_quad *qd = &o->u.quad;
+    const double n[3] = { qd->normal.x * us, qd->normal.y * us,
+                          qd->normal.z * us };
+    const double ea[3] = { (s.cam.eye.x - (double)qd->corner.x) / 65536,
+                           (s.cam.eye.y - (double)qd->corner.y) / 65536,
+                           (s.cam.eye.z - (double)qd->corner.z) / 65536 };
     const double h = 2 * dot_d(ea, n);
     const fx_vec3 m = fx_v3_sub(s.cam.eye, v3(h * n[0], h * n[1], h * n[2]));
     for (int k = 0; k < 600; k++) {
@@ -250,7 +262,7 @@ static void mirror_trial(double spread, long *hits, long *missing,
         if (!rt_intersect(o, &r, RT_EPS, FX_MAX, &t, &part))
             continue;
         const fx_vec3 p = fx_v3_madd_d(r.o, r.d, t);
-        fx_dir3 ng = o->n;
+        fx_dir3 ng = qd->normal;
         if (fx_d3_dot_raw(r.d, ng) > 0)
             ng = fx_d3_neg(ng);
         const rt_ray rr = make_ray(rt_v3_madd_pow2(p, ng, rt_origin_log2(o), 0),

@@ -381,7 +381,7 @@ static test_mesh make_at(const char *name, int torus, double scale,
     free(vn);
     free(tri);
     tm.o.kind = RT_MESH;
-    tm.o.mesh = tm.m;
+    tm.o.u.mesh.tables = tm.m;
     CHECK_EQ(rt_object_prepare(&tm.o), RT_OK);
     return tm;
 }
@@ -431,7 +431,7 @@ static void test_limit(void)
         rt_object o;
         memset(&o, 0, sizeof o);
         o.kind = RT_MESH;
-        o.mesh = m;
+        o.u.mesh.tables = m;
         CHECK_EQ(rt_object_prepare(&o), RT_OK);
         /* Straight down onto the middle of a cell: t = 5 exactly. */
         rt_ray r;

@@ -454,23 +454,24 @@ static void test_full_scene(void)
     const rt_object *o = &S.obj[0];
     CHECK_EQ(o->kind, RT_SPHERE);
     CHECK_EQ(o->material, 1);
-    CHECK_EQ(o->a.z, FX_INT(3));
-    CHECK_EQ(o->r, 98304);
+    CHECK_EQ(o->u.sphere.center.z, FX_INT(3));
+    CHECK_EQ(o->u.sphere.radius, 98304);
     CHECK_EQ(o->br, 98304); /* rt_object_prepare ran */
     o = &S.obj[1];
     CHECK_EQ(o->kind, RT_QUAD);
     CHECK_EQ(o->material, 3);
-    CHECK_EQ(o->b.x, FX_INT(40));
-    CHECK_EQ(o->c.z, FX_INT(40));
-    CHECK_EQ(o->n.y, -FX_UONE); /* edge1 x edge2 = (40,0,0) x (0,0,40) */
+    CHECK_EQ(o->u.quad.edge1.x, FX_INT(40));
+    CHECK_EQ(o->u.quad.edge2.z, FX_INT(40));
+    /* edge1 x edge2 = (40,0,0) x (0,0,40) */
+    CHECK_EQ(o->u.quad.normal.y, -FX_UONE);
     o = &S.obj[2];
     CHECK_EQ(o->kind, RT_BOX);
-    CHECK_EQ(o->a.x, -FX_ONE);
-    CHECK_EQ(o->b.y, FX_INT(2));
+    CHECK_EQ(o->u.box.min.x, -FX_ONE);
+    CHECK_EQ(o->u.box.max.y, FX_INT(2));
     CHECK_EQ(o->material, 4);
     for (int i = 3; i <= 7; i++) {
         CHECK_EQ(S.obj[i].kind, RT_CYLINDER);
-        CHECK_EQ(S.obj[i].h, FX_INT(3));
+        CHECK_EQ(S.obj[i].u.upright.height, FX_INT(3));
         CHECK_EQ(S.obj[i].material, 2);
     }
     CHECK_EQ(S.obj[3].caps, RT_CAP_BOTTOM | RT_CAP_TOP);
@@ -482,10 +483,10 @@ static void test_full_scene(void)
     CHECK_EQ(S.obj[7].caps, 0);
     CHECK_EQ(S.obj[8].kind, RT_CONE);
     CHECK_EQ(S.obj[8].caps, RT_CAP_BOTTOM);
-    CHECK_EQ(S.obj[8].r, FX_ONE);
+    CHECK_EQ(S.obj[8].u.upright.radius, FX_ONE);
     CHECK_EQ(S.obj[9].kind, RT_CONE);
     CHECK_EQ(S.obj[9].caps, 0);
-    CHECK_EQ(S.obj[9].a.x, FX_INT(-4));
+    CHECK_EQ(S.obj[9].u.upright.base.x, FX_INT(-4));
     CHECK_EQ(S.obj[9].material, 0);
 }
 
@@ -533,8 +534,8 @@ static void test_defaults_and_layout(void)
                "   # indented comment\n"
                "light 1 2 3\n"
                "camera fov 30 look 0 0 0 eye 0 0 5\r\n"));
-    CHECK_EQ(S.obj[0].r, FX_INT(2));
-    CHECK_EQ(S.obj[0].a.z, FX_INT(3));
+    CHECK_EQ(S.obj[0].u.sphere.radius, FX_INT(2));
+    CHECK_EQ(S.obj[0].u.sphere.center.z, FX_INT(3));
     CHECK_EQ(S.cam.fov, FX_INT(30));
     /* A last line without a newline, and a lone CR before the end. */
     CHECK(GOOD(CAM "light 1 2 3"));
@@ -851,7 +852,8 @@ static void test_object_errors(void)
                                       "material red\n", i);
     CHECK(GOOD(buf));
     CHECK_EQ(S.n_objects, RT_MAX_OBJECTS);
-    CHECK_EQ(S.obj[RT_MAX_OBJECTS - 1].a.x, FX_INT(RT_MAX_OBJECTS - 1));
+    CHECK_EQ(S.obj[RT_MAX_OBJECTS - 1].u.sphere.center.x,
+             FX_INT(RT_MAX_OBJECTS - 1));
     sprintf(buf + n, "box min 0 0 0 max 1 1 1 material red\n");
     BAD(buf, RT_ERR_CAPACITY, RT_MAX_OBJECTS + 3, 1,
         "too many objects (RT_MAX_OBJECTS is 128)");

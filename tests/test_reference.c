@@ -223,10 +223,15 @@ static void test_convexity(void)
         o.kind = cases[i].kind;
         o.caps = cases[i].caps;
         o.convex = (uint8_t)!cases[i].convex; /* derived: must be ignored */
-        o.r = FX_INT(3) / 2;
+        const int sphere = o.kind == RT_SPHERE;
+        const int upright = o.kind == RT_CYLINDER || o.kind == RT_CONE;
+        if (sphere)
+            o.u.sphere.radius = FX_INT(3) / 2;
+        if (upright)
+            o.u.upright.radius = FX_INT(3) / 2;
         ref_shape_from_object(&o, &s);
         CHECK_EQ(s.convex, cases[i].convex);
-        CHECK_DBL(s.r, 1.5, 0);
+        CHECK_DBL(s.r, sphere || upright ? 1.5 : 0, 0);
     }
 }
 
@@ -301,10 +306,16 @@ static rt_material *add(rt_scene *s, int kind, fx_vec3 a, fx_vec3 b,
     rt_material *m = &s->mat[s->n_materials];
     o->kind = (uint8_t)kind;
     o->material = s->n_materials++;
-    o->a = a;
-    o->b = b;
-    o->c = c;
-    o->r = (fx_t)lround(r * 65536);
+    o->u.origin = a; /* every kind's first point */
+    if (kind == RT_SPHERE)
+        o->u.sphere.radius = (fx_t)lround(r * 65536);
+    else if (kind == RT_QUAD) {
+        o->u.quad.edge1 = b;
+        o->u.quad.edge2 = c;
+    } else if (kind == RT_BOX)
+        o->u.box.max = b;
+    else
+        o->u.upright.radius = (fx_t)lround(r * 65536);
     m->color = rgb(1, 1, 1);
     m->shininess = 1;
     m->ior = FX_ONE;
@@ -513,7 +524,7 @@ static void test_render_texture_bands(void)
     s.light[0].color = rgb(1, 1, 1);
     add(&s, RT_CONE, fv(0, -1, -3), fv(0, 0, 0), fv(0, 0, 0), 1)->reflect =
         FX_HALF;
-    s.obj[1].h = FX_INT(2);
+    s.obj[1].u.upright.height = FX_INT(2);
     s.obj[1].caps = RT_CAP_BOTTOM;
     CHECK_EQ(render(&s, 8, 6, 4, 3, &whole, NULL), RT_OK);
     memset(&o, 0, sizeof o);
@@ -527,7 +538,7 @@ static void test_render_texture_bands(void)
                                  to_sink, &k, NULL), RT_OK);
     CHECK_EQ(k.used, whole.used);
     CHECK(memcmp(k.buf, whole.buf, whole.used) == 0);
-    s.obj[1].h = 0;
+    s.obj[1].u.upright.height = 0;
     CHECK_EQ(render(&s, 8, 6, 4, 3, &k, NULL), RT_ERR_DEGENERATE);
 }
 

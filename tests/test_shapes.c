@@ -22,9 +22,13 @@ static rt_object make(int kind, double ax, double ay, double az, double r,
     rt_object o;
     memset(&o, 0, sizeof o);
     o.kind = (uint8_t)kind;
-    o.a = fx_v3(D2F(ax), D2F(ay), D2F(az));
-    o.r = D2F(r);
-    o.h = D2F(h);
+    o.u.origin = fx_v3(D2F(ax), D2F(ay), D2F(az)); /* any kind's first */
+    if (kind == RT_SPHERE)
+        o.u.sphere.radius = D2F(r);
+    if (kind == RT_CYLINDER || kind == RT_CONE) {
+        o.u.upright.radius = D2F(r);
+        o.u.upright.height = D2F(h);
+    }
     o.caps = RT_CAP_BOTTOM | RT_CAP_TOP;
     return o;
 }
@@ -100,8 +104,8 @@ static void sphere_cases(void)
 static void quad_cases(void)
 {
     rt_object q = make(RT_QUAD, -1, 0, -1, 0, 0);
-    q.b = fx_v3(0, 0, D2F(2));   /* edge1 along +z */
-    q.c = fx_v3(D2F(2), 0, 0);   /* edge2 along +x: normal +y */
+    q.u.quad.edge1 = fx_v3(0, 0, D2F(2));   /* edge1 along +z */
+    q.u.quad.edge2 = fx_v3(D2F(2), 0, 0);   /* edge2 along +x: normal +y */
     CHECK_EQ(rt_object_prepare(&q), RT_OK);
     HIT(q, ray(0, 3, 0, 0, -1, 0), 3, 0, 1, 0);
     HIT(q, ray(0.5, -2, 0.5, 0, 1, 0), 2, 0, 1, 0); /* from below */
@@ -112,15 +116,15 @@ static void quad_cases(void)
     HIT(q, ray(-5, 0.01, 0, 1, -0.002, 0),
         F2D(D2F(0.01)) / 0.002 * sqrt(1 + 0.002 * 0.002), 0, 1, 0);
     rt_object bad = make(RT_QUAD, 0, 0, 0, 0, 0);
-    bad.b = fx_v3(FX_ONE, 0, 0);
-    bad.c = fx_v3(2 * FX_ONE, 0, 0);
+    bad.u.quad.edge1 = fx_v3(FX_ONE, 0, 0);
+    bad.u.quad.edge2 = fx_v3(2 * FX_ONE, 0, 0);
     CHECK_EQ(rt_object_prepare(&bad), RT_ERR_DEGENERATE);
 }
 
 static void box_cases(void)
 {
     rt_object b = make(RT_BOX, -1, -1, -1, 0, 0);
-    b.b = fx_v3(FX_ONE, FX_ONE, FX_ONE);
+    b.u.box.max = fx_v3(FX_ONE, FX_ONE, FX_ONE);
     CHECK_EQ(rt_object_prepare(&b), RT_OK);
     HIT(b, ray(0, 0, -5, 0, 0, 1), 4, 0, 0, -1);
     HIT(b, ray(5, 0.5, 0.5, -1, 0, 0), 4, 1, 0, 0);
@@ -129,7 +133,7 @@ static void box_cases(void)
     MISS(b, ray(0, 0, 5, 0, 0, 1));              /* behind */
     HIT(b, ray(0, 0.999, -5, 0, 0, 1), 4, 0, 0, -1); /* near an edge */
     rt_object flat = make(RT_BOX, 0, 0, 0, 0, 0);
-    flat.b = fx_v3(FX_ONE, 0, FX_ONE);
+    flat.u.box.max = fx_v3(FX_ONE, 0, FX_ONE);
     CHECK_EQ(rt_object_prepare(&flat), RT_ERR_DEGENERATE);
 }
 
@@ -187,7 +191,7 @@ static void random_spheres(void)
         double dx = ((int)(x % 2001) - 1000) / 2000.0;
         rt_ray ry = ray(0, 0, 0, dx, 0, 1);
         double l = sqrt(dx * dx + 1), ddx = dx / l, ddz = 1 / l;
-        double ccx = F2D(s.a.x), ccz = F2D(s.a.z), rr = F2D(s.r);
+        double ccx = F2D(s.u.sphere.center.x), ccz = F2D(s.u.sphere.center.z), rr = F2D(s.u.sphere.radius);
         double b = ccx * ddx + ccz * ddz;
         double hx = ccx - b * ddx, hz = ccz - b * ddz;
         double h2 = hx * hx + hz * hz, disc = rr * rr - h2;
@@ -249,7 +253,7 @@ static void random_cylinder_normals(void)
             unprepared++;
             continue;
         }
-        double ax = F2D(c.a.x), az = F2D(c.a.z), rr = F2D(c.r);
+        double ax = F2D(c.u.upright.base.x), az = F2D(c.u.upright.base.z), rr = F2D(c.u.upright.radius);
         /* From outside (i even) or inside, towards a point on the side. */
         double ang = 3.14159265 * unif(&x), u = 1.5 * unif(&x);
         double tx = ax + rr * cos(ang), ty = u, tz = az + rr * sin(ang);
@@ -329,14 +333,14 @@ static void random_cone_normals(void)
             unprepared++;
             continue;
         }
-        double ax = F2D(c.a.x), az = F2D(c.a.z), rr = F2D(c.r);
-        double ya = F2D(c.a.y) + F2D(c.h), k = rr / F2D(c.h);
+        double ax = F2D(c.u.upright.base.x), az = F2D(c.u.upright.base.z), rr = F2D(c.u.upright.radius);
+        double ya = F2D(c.u.upright.base.y) + F2D(c.u.upright.height), k = rr / F2D(c.u.upright.height);
         double f = 0.5 + 0.4 * unif(&x), ang = 3.14159265 * unif(&x);
         double tx = ax + rr * f * cos(ang), tz = az + rr * f * sin(ang);
-        double ty = ya - F2D(c.h) * f;
+        double ty = ya - F2D(c.u.upright.height) * f;
         double ox = i & 1 ? ax + 0.3 * rr * f * unif(&x) : tx + 20 * unif(&x);
         double oz = i & 1 ? az + 0.3 * rr * f * unif(&x) : tz + 20 * unif(&x);
-        double oy = i & 1 ? ty - 0.1 * F2D(c.h) * (unif(&x) + 1.5)
+        double oy = i & 1 ? ty - 0.1 * F2D(c.u.upright.height) * (unif(&x) + 1.5)
                           : ty + 20 * unif(&x);
         rt_ray ry = ray(ox, oy, oz, tx - ox, ty - oy, tz - oz);
         fx_t t;
@@ -395,7 +399,7 @@ static void random_cone_normals(void)
            n, worst, worst_graze, worst_plain, worst_p * 65536);
 }
 
-/* Flat quads (rt_object.flat, n along y) take a short path in the
+/* Flat quads (rt_quad.flat, normal along y) take a short path in the
  * quad test: it must give what the general path gives, bit for bit, for
  * both edge orders, both normal signs, and rays from anywhere. */
 static void flat_quads(void)
@@ -411,13 +415,13 @@ static void flat_quads(void)
         double e1 = sz * (th_rnd64(&st) & 1 ? 1 : -1);
         double e2 = sz * 0.5 * (th_rnd64(&st) & 1 ? 1 : -1);
         int swap = (int)(th_rnd64(&st) & 1);
-        o.b = swap ? fx_v3(D2F(e1), 0, 0) : fx_v3(0, 0, D2F(e1));
-        o.c = swap ? fx_v3(0, 0, D2F(e2)) : fx_v3(D2F(e2), 0, 0);
+        o.u.quad.edge1 = swap ? fx_v3(D2F(e1), 0, 0) : fx_v3(0, 0, D2F(e1));
+        o.u.quad.edge2 = swap ? fx_v3(0, 0, D2F(e2)) : fx_v3(D2F(e2), 0, 0);
         if (rt_object_prepare(&o) != RT_OK)
             continue;
-        flats[o.flat]++;
+        flats[o.u.quad.flat]++;
         rt_object g = o;
-        g.flat = 0;
+        g.u.quad.flat = 0;
         for (int k = 0; k < 500; k++) {
             double ox = cx + (double)(th_rnd64(&st) % 4001) / 100.0 - 20;
             double oy = cy + (double)(th_rnd64(&st) % 4001) / 100.0 - 20;
@@ -425,8 +429,8 @@ static void flat_quads(void)
             /* A target on the quad's plane, in it or just past an edge. */
             double a = (double)(th_rnd64(&st) % 1201) / 1000.0 - 0.1;
             double b = (double)(th_rnd64(&st) % 1201) / 1000.0 - 0.1;
-            double tx = cx + a * F2D(o.b.x) + b * F2D(o.c.x);
-            double tz = cz + a * F2D(o.b.z) + b * F2D(o.c.z);
+            double tx = cx + a * F2D(o.u.quad.edge1.x) + b * F2D(o.u.quad.edge2.x);
+            double tz = cz + a * F2D(o.u.quad.edge1.z) + b * F2D(o.u.quad.edge2.z);
             rt_ray r = ray(ox, oy, oz, tx - ox, cy - oy + 1e-3, tz - oz);
             fx_t t1 = 0, t2 = 0;
             uint16_t p1 = 0, p2 = 0;

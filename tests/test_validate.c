@@ -35,8 +35,8 @@ static void small_scene(rt_scene *s, rt_options *o)
     s->light[0].color = (rt_rgb){ FX_ONE, FX_ONE, FX_ONE };
     s->n_objects = 1;
     s->obj[0].kind = RT_SPHERE;
-    s->obj[0].a = fx_v3(0, 0, 0);
-    s->obj[0].r = FX_ONE;
+    s->obj[0].u.sphere.center = fx_v3(0, 0, 0);
+    s->obj[0].u.sphere.radius = FX_ONE;
     CHECK_EQ(rt_object_prepare(&s->obj[0]), RT_OK);
     rt_options_from_scene(o, s);
     o->width = 8;
@@ -76,7 +76,7 @@ int main(void)
     CHECK_EQ(render(&s, &o, &rows), RT_ERR_ARG);
     /* A mesh without its tables. */
     s.obj[0].kind = RT_MESH;
-    s.obj[0].mesh = NULL;
+    s.obj[0].u.mesh.tables = NULL;
     CHECK_EQ(render(&s, &o, &rows), RT_ERR_ARG);
     s.obj[0].kind = RT_SPHERE;
 

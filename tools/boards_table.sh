@@ -46,7 +46,9 @@ symsize() { # elf nm symbol -> its size in bytes
 }
 
 rows() {
-    for b in $(cd mk/boards && ls *.mk | sed 's/\.mk$//'); do
+    # One-core boards: a two-core board's figures, per core, are in
+    # docs/dual-core.md (make dual-table).
+    for b in $(cd mk/boards && grep -L 'FW_CORES=2' *.mk | sed 's/\.mk$//'); do
         for mode in tables text; do
             p=$([ $mode = tables ] && echo 1 || echo 0)
             dir=build/boards/$b-$mode

@@ -135,12 +135,18 @@ static void shapes(uint32_t bv)
         for (unsigned k = 0; k < sizeof o; k++)
             z[k] = 0;
         o.kind = (uint8_t)kind;
-        o.a = fx_v3(FX_INT(1), 0, FX_INT(2));
-        o.b = kind == RT_QUAD ? fx_v3(FX_INT(4), 0, 0)
-                              : fx_v3(FX_INT(3), FX_INT(2), FX_INT(4));
-        o.c = fx_v3(0, FX_INT(3), FX_INT(1));
-        o.r = FX_INT(3) / 2;
-        o.h = FX_INT(3);
+        o.u.origin = fx_v3(FX_INT(1), 0, FX_INT(2)); /* any kind's first */
+        if (kind == RT_SPHERE) {
+            o.u.sphere.radius = FX_INT(3) / 2;
+        } else if (kind == RT_QUAD) {
+            o.u.quad.edge1 = fx_v3(FX_INT(4), 0, 0);
+            o.u.quad.edge2 = fx_v3(0, FX_INT(3), FX_INT(1));
+        } else if (kind == RT_BOX) {
+            o.u.box.max = fx_v3(FX_INT(3), FX_INT(2), FX_INT(4));
+        } else if (kind == RT_CYLINDER || kind == RT_CONE) {
+            o.u.upright.radius = FX_INT(3) / 2;
+            o.u.upright.height = FX_INT(3);
+        }
         o.caps = RT_CAP_BOTTOM | RT_CAP_TOP;
         rt_object_prepare(&o);
         for (int i = 0; i < N; i++) {

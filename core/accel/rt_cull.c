@@ -39,15 +39,18 @@ typedef struct {
  * units away or more (then no corner culling). */
 static int quad_corners(fx_vec3 q[4], const rt_object *o, fx_vec3 e)
 {
+    const fx_vec3 a = o->u.quad.corner;
+    const fx_vec3 e1 = o->u.quad.edge1, e2 = o->u.quad.edge2;
     int ok = 1;
     for (int i = 0; i < 4; i++) {
-        const int32_t u = i & 1, v = i >> 1; /* the corner a + u b + v c */
-        const int64_t x = (int64_t)o->a.x - e.x + (int64_t)u * o->b.x +
-                          (int64_t)v * o->c.x;
-        const int64_t y = (int64_t)o->a.y - e.y + (int64_t)u * o->b.y +
-                          (int64_t)v * o->c.y;
-        const int64_t z = (int64_t)o->a.z - e.z + (int64_t)u * o->b.z +
-                          (int64_t)v * o->c.z;
+        /* The corner a + u e1 + v e2. */
+        const int32_t u = i & 1, v = i >> 1;
+        const int64_t x = (int64_t)a.x - e.x + (int64_t)u * e1.x +
+                          (int64_t)v * e2.x;
+        const int64_t y = (int64_t)a.y - e.y + (int64_t)u * e1.y +
+                          (int64_t)v * e2.y;
+        const int64_t z = (int64_t)a.z - e.z + (int64_t)u * e1.z +
+                          (int64_t)v * e2.z;
         ok &= x > -FX_INT(16384) && x < FX_INT(16384) &&
               y > -FX_INT(16384) && y < FX_INT(16384) &&
               z > -FX_INT(16384) && z < FX_INT(16384);
@@ -80,15 +83,17 @@ static void cull_obj_set(cull_obj *k, const rt_object *o, const rt_scene *s,
     if (o->kind == RT_QUAD) {
         /* The eye's side of the plane; a hit needs d.n of the other sign.
          * Too close to the plane to tell: no plane culling. */
-        const int64_t raw = fx_pd_dot_diff_raw(o->a, s->cam.eye, o->n);
+        const fx_dir3 n = o->u.quad.normal;
+        const int64_t raw =
+            fx_pd_dot_diff_raw(o->u.quad.corner, s->cam.eye, n);
         fx_t num = fx_sat64((raw + ((int64_t)1 << (FX_UBITS - 1))) >>
                             FX_UBITS);
         k->corners = (int8_t)quad_corners(k->q, o, s->cam.eye);
         if (num > 256 || num < -256) {
             k->side = num > 0 ? 1 : -1;
-            k->pa = fx_d3_dot(cf->w, o->n);
-            k->pb = fx_d3_dot(cf->up, o->n);
-            k->pc = fx_d3_dot(cf->right, o->n);
+            k->pa = fx_d3_dot(cf->w, n);
+            k->pb = fx_d3_dot(cf->up, n);
+            k->pc = fx_d3_dot(cf->right, n);
         }
     }
 }

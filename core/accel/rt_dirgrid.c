@@ -219,15 +219,16 @@ static uint8_t add_grid(rt_dir_grids *gs, unsigned *used, unsigned *next,
     return (uint8_t)(*used)++;
 }
 
-/* The eye e mirrored in quad o's plane (through o->a, unit normal o->n)
+/* The eye e mirrored in quad o's plane (through a, the corner, with the
+ * unit normal n; lu and lv are its len_u and len_v: rt_quad)
  * into *m, with in *radius how far a reflected camera ray's line may pass
  * from it; 0 when that is out of range (no grid).
  *
  * A camera ray from e hits the quad at p; its mirror direction r, traced
  * back from p by |p - e|, ends at e's image in the plane through p
- * parallel to o->n: *m, if p lies on that plane. So the reflected ray
+ * parallel to n: *m, if p lies on that plane. So the reflected ray
  * starts, seen from *m, within the sum of: twice p's distance from the
- * plane of a and o->n (p is on the quad's own plane, whose normal o->n
+ * plane of a and n (p is on the quad's own plane, whose normal n
  * is within a few 2^-FX_UBITS: at most (lu + lv) 2^-(FX_UBITS - 2)),
  * p's own rounding, and that of *m (each a few ulps). The radius takes
  * 2^-10 of |e - a| + lu + lv and 1/64 unit, far above both at any
@@ -236,10 +237,12 @@ static uint8_t add_grid(rt_dir_grids *gs, unsigned *used, unsigned *next,
 static int mirror_eye(const rt_object *o, fx_vec3 e, fx_vec3 *m,
                       fx_t *radius)
 {
-    const int64_t v[3] = { (int64_t)e.x - o->a.x, (int64_t)e.y - o->a.y,
-                           (int64_t)e.z - o->a.z };
-    const int32_t n[3] = { o->n.x, o->n.y, o->n.z };
-    int64_t dot = 0, size = (int64_t)o->lu + o->lv;
+    const rt_quad *q = &o->u.quad;
+    const int64_t v[3] = { (int64_t)e.x - q->corner.x,
+                           (int64_t)e.y - q->corner.y,
+                           (int64_t)e.z - q->corner.z };
+    const int32_t n[3] = { q->normal.x, q->normal.y, q->normal.z };
+    int64_t dot = 0, size = (int64_t)q->len_u + q->len_v;
     for (unsigned k = 0; k < 3; k++) {
         if (v[k] <= -FAR_LIMIT || v[k] >= FAR_LIMIT)
             return 0;

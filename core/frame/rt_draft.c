@@ -194,7 +194,8 @@ static void draft_sign_hit(void *ctx, const rt_scene *s, unsigned oi,
          * them look alike. */
         const fx_vec3 p = fx_v3_madd_d(r->o, r->d, t);
         const fx_t pk[3] = { p.x, p.y, p.z };
-        const fx_t ak[3] = { o->a.x, o->a.y, o->a.z };
+        const fx_vec3 a = o->u.origin;
+        const fx_t ak[3] = { a.x, a.y, a.z };
         for (unsigned k = 0; k < 3; k++) {
             fx_t rem;
             int64_t c = fx_floor_div((int64_t)pk[k] - ak[k], m->tex_scale,

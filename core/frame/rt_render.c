@@ -93,7 +93,7 @@ static int scene_in_range(const rt_scene *s)
     for (unsigned i = 0; i < s->n_objects; i++)
         if (s->obj[i].material >= s->n_materials ||
             s->obj[i].kind >= RT_KIND_COUNT ||
-            (s->obj[i].kind == RT_MESH && !s->obj[i].mesh))
+            (s->obj[i].kind == RT_MESH && !s->obj[i].u.mesh.tables))
             return 0;
     return 1;
 }
@@ -106,9 +106,10 @@ rt_status rt_render_rows(const rt_scene *s, const rt_options *o, int y0,
                             fn, ctx, stats);
 }
 
-rt_status rt_render_window(const rt_scene *s, const rt_options *o, int x0,
-                           int y0, int x1, int y1, uint8_t *row_buf,
-                           rt_row_fn fn, void *ctx, rt_stats *stats)
+/* The checks every entry point makes on the scene, the options and the
+ * window's columns: RT_OK, or the status to return. */
+static rt_status check_args(const rt_scene *s, const rt_options *o, int x0,
+                            int x1, const uint8_t *row_buf, rt_row_fn fn)
 {
     /* The scene's ranges and indices first: rt_scene_features reads
      * through them. */
@@ -117,31 +118,79 @@ rt_status rt_render_window(const rt_scene *s, const rt_options *o, int x0,
     if ((rt_scene_features(s, o->spp) & ~rt_build_features()) ||
         (!RT_HAS_DRAFT && o->draft))
         return RT_ERR_UNSUPPORTED;
-    unsigned n = grid_side(o->spp);
-    if (!row_buf || !fn || n == 0 || o->width < 1 ||
+    if (!row_buf || !fn || grid_side(o->spp) == 0 || o->width < 1 ||
         o->width > RT_MAX_WIDTH || o->height < 1 ||
         o->height > RT_MAX_HEIGHT || o->depth > RT_MAX_DEPTH ||
-        o->format > RT_RGB565_BE || y0 < 0 || y1 > (int)o->height ||
-        y0 > y1 || x0 < 0 || x1 > (int)o->width || x0 >= x1)
+        o->format > RT_RGB565_BE || x0 < 0 || x1 > (int)o->width ||
+        x0 >= x1)
         return RT_ERR_ARG;
-    const unsigned c0 = (unsigned)x0, c1 = (unsigned)x1;
+    return RT_OK;
+}
+
+/* Renders the band y0 <= y < y1 of columns c0 <= x < c1 with a tracer
+ * already set up. */
+static rt_status render_band(const rt_tracer *tr, rt_work *wk,
+                             const rt_cam_frame *cf, const rt_options *o,
+                             unsigned c0, int y0, unsigned c1, int y1,
+                             uint8_t *row_buf, rt_row_fn fn, void *ctx)
+{
+    if (RT_HAS_SUPERSAMPLING && o->adaptive && o->spp > 1)
+        return rt_aa_adaptive(tr, wk, cf, o, c0, y0, c1, y1, row_buf, fn,
+                              ctx);
+    if (RT_HAS_DRAFT && o->draft)
+        return rt_draft_render(tr, wk, cf, o, c0, y0, c1, y1, row_buf, fn,
+                               ctx);
+    for (int y = y0; y < y1; y++) {
+        rt_aa_row(tr, wk, cf, o, (unsigned)y, c0, c1, row_buf);
+        if (fn(ctx, y, row_buf, rt_pixel_bytes(o, c1 - c0)) != 0)
+            return RT_ERR_ABORTED;
+    }
+    return RT_OK;
+}
+
+rt_status rt_render_window(const rt_scene *s, const rt_options *o, int x0,
+                           int y0, int x1, int y1, uint8_t *row_buf,
+                           rt_row_fn fn, void *ctx, rt_stats *stats)
+{
+    rt_status st = check_args(s, o, x0, x1, row_buf, fn);
+    if (st != RT_OK)
+        return st;
+    if (y0 < 0 || y1 > (int)o->height || y0 > y1)
+        return RT_ERR_ARG;
 
     rt_tracer tr;
     rt_tracer_init(&tr, s, o);
     rt_work wk;
     rt_work_init(&wk, stats);
     rt_cam_frame cf;
-    rt_cam_setup(&cf, s, o->width, o->height, n);
-    if (RT_HAS_SUPERSAMPLING && o->adaptive && n > 1)
-        return rt_aa_adaptive(&tr, &wk, &cf, o, c0, y0, c1, y1, row_buf, fn,
-                              ctx);
-    if (RT_HAS_DRAFT && o->draft)
-        return rt_draft_render(&tr, &wk, &cf, o, c0, y0, c1, y1, row_buf, fn,
-                               ctx);
-    for (int y = y0; y < y1; y++) {
-        rt_aa_row(&tr, &wk, &cf, o, (unsigned)y, c0, c1, row_buf);
-        if (fn(ctx, y, row_buf, rt_pixel_bytes(o, c1 - c0)) != 0)
-            return RT_ERR_ABORTED;
+    rt_cam_setup(&cf, s, o->width, o->height, grid_side(o->spp));
+    return render_band(&tr, &wk, &cf, o, (unsigned)x0, y0, (unsigned)x1, y1,
+                       row_buf, fn, ctx);
+}
+
+rt_status rt_render_row_set(const rt_scene *s, const rt_options *o,
+                            rt_next_row_fn next, uint8_t *row_buf,
+                            rt_row_fn fn, void *ctx, rt_stats *stats)
+{
+    rt_status st = check_args(s, o, 0, o ? (int)o->width : 1, row_buf, fn);
+    if (st != RT_OK)
+        return st;
+    if (!next)
+        return RT_ERR_ARG;
+
+    rt_tracer tr;
+    rt_tracer_init(&tr, s, o);
+    rt_work wk;
+    rt_work_init(&wk, stats);
+    rt_cam_frame cf;
+    rt_cam_setup(&cf, s, o->width, o->height, grid_side(o->spp));
+    for (int y = next(ctx); y >= 0; y = next(ctx)) {
+        if (y >= (int)o->height)
+            return RT_ERR_ARG;
+        st = render_band(&tr, &wk, &cf, o, 0, y, o->width, y + 1, row_buf,
+                         fn, ctx);
+        if (st != RT_OK)
+            return st;
     }
     return RT_OK;
 }

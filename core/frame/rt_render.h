@@ -70,4 +70,24 @@ rt_status rt_render_window(const rt_scene *s, const rt_options *o, int x0,
                            int y0, int x1, int y1, uint8_t *row_buf,
                            rt_row_fn fn, void *ctx, rt_stats *stats);
 
+/* Names the next row for rt_render_row_set() to render: a row
+ * 0 <= y < height, or a negative value when there is none left. */
+typedef int (*rt_next_row_fn)(void *ctx);
+
+/* Renders the rows that next(ctx) names, in the order it names them, until
+ * it returns a negative value, into row_buf (rt_buffer_bytes() bytes),
+ * calling fn(ctx, ...) after each as rt_render_rows() does. Each row has
+ * the bytes of the same row in a full render. The set-up (checks, the
+ * tracer's tables) is done once a call, not once a row, so a port that
+ * shares a frame among cores or threads can hand rows out one at a time.
+ * The core keeps no state between or across calls: calls with their own
+ * row_buf and stats may run at once on different CPUs over one scene.
+ * With adaptive anti-aliasing or a draft, each row also computes the
+ * margin a one-row band needs (neighbouring rows' samples). Returns as
+ * rt_render_rows(), and RT_ERR_ARG for a row outside the frame (fn is not
+ * called for it). */
+rt_status rt_render_row_set(const rt_scene *s, const rt_options *o,
+                            rt_next_row_fn next, uint8_t *row_buf,
+                            rt_row_fn fn, void *ctx, rt_stats *stats);
+
 #endif /* RT_RENDER_H */

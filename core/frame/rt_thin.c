@@ -27,7 +27,8 @@ void rt_thin_init(rt_thin *t, const rt_scene *s)
             t->quad_bit[i] = (uint8_t)t->n_quads;
             t->quad_obj[t->n_quads] = (uint16_t)i;
             t->quad_d0[t->n_quads] =
-                fx_pd_dot(fx_v3_sub(s->cam.eye, ob->a), ob->n);
+                fx_pd_dot(fx_v3_sub(s->cam.eye, ob->u.quad.corner),
+                          ob->u.quad.normal);
             t->n_quads++;
         }
     }
@@ -42,8 +43,9 @@ static int quad_off_row(const rt_object *o, const rt_scene *s,
     const rt_cam_ray b = rt_cam_row_base(cf, rt_cam_soff(cf, k));
     const fx_dir3 f = fx_d3_normalize64(b.x, b.y, b.z);
     const fx_dir3 nr = fx_d3_cross_unit(fx_d3_raw(f), fx_d3_raw(cf->right));
-    const fx_t s0 = fx_pd_dot(fx_v3_sub(o->a, s->cam.eye), nr);
-    const fx_t s1 = fx_pd_dot(o->b, nr), s2 = fx_pd_dot(o->c, nr);
+    const rt_quad *q = &o->u.quad;
+    const fx_t s0 = fx_pd_dot(fx_v3_sub(q->corner, s->cam.eye), nr);
+    const fx_t s1 = fx_pd_dot(q->edge1, nr), s2 = fx_pd_dot(q->edge2, nr);
     const int64_t c[4] = { s0, (int64_t)s0 + s1, (int64_t)s0 + s2,
                            (int64_t)s0 + s1 + s2 };
     int above = 1, below = 1;
@@ -81,7 +83,8 @@ uint16_t rt_thin_front(const rt_thin *t, const rt_scene *s, const rt_ray *r,
     uint16_t bits = 0;
     for (unsigned q = 0; q < t->n_quads; q++) {
         const fx_t d0 = t->quad_d0[q];
-        const fx_t nd = fx_d3_dot(s->obj[t->quad_obj[q]].n, r->d);
+        const fx_t nd =
+            fx_d3_dot(s->obj[t->quad_obj[q]].u.quad.normal, r->d);
         /* Along the ray n . (p - a) goes from d0 at the eye to
          * d0 + t nd: the ray stays on the eye's side while they agree. */
         const int64_t end = (int64_t)d0 + (((int64_t)tmax * nd) >> 16);

@@ -92,7 +92,7 @@ rt_status rt_parse_mesh(rt_lex *p, const rt_lex_token *kw, rt_scene *s,
     memset(o, 0, sizeof *o);
     o->kind = RT_MESH;
     o->material = (uint8_t)mat;
-    o->mesh = m;
+    o->u.mesh.tables = m;
     if (rt_object_prepare(o) != RT_OK)
         return rt_lex_fail(p, &file, RT_ERR_DEGENERATE,
                            "the mesh's tables are inconsistent (a loader "

@@ -199,7 +199,9 @@ rt_status rt_parse_material_ref(rt_lex *p, const rt_scene *s,
 
 /* ---- Objects ------------------------------------------------------------ */
 
-/* What each object field sets. */
+/* What each object field sets: F_A the first point (center, corner, min
+ * or base), F_B and F_C the second and third vectors (edge1 and edge2, or
+ * max), F_R the radius, F_H the height. */
 enum { F_A, F_B, F_C, F_R, F_H, F_MAT, F_OPEN, F_CAPS };
 
 typedef struct {
@@ -236,6 +238,24 @@ static int key_of(const shape_spec *sp, int field)
     return i;
 }
 
+/* Where vector field f (F_A, F_B, F_C) of o's kind goes. */
+static fx_vec3 *vec_field(rt_object *o, int f)
+{
+    if (f == F_A)
+        return &o->u.origin; /* every record's first point (rt_scene.h) */
+    if (o->kind == RT_QUAD)
+        return f == F_B ? &o->u.quad.edge1 : &o->u.quad.edge2;
+    return &o->u.box.max;
+}
+
+/* Where scalar field f (F_R, F_H) of o's kind goes. */
+static fx_t *fx_field(rt_object *o, int f)
+{
+    if (o->kind == RT_SPHERE)
+        return &o->u.sphere.radius;
+    return f == F_R ? &o->u.upright.radius : &o->u.upright.height;
+}
+
 static rt_status degenerate(rt_lex *p, const rt_lex_token *at,
                             const char *shape, const char *why)
 {
@@ -254,7 +274,7 @@ static rt_status check_shape(rt_lex *p, const rt_lex_token *kw,
 {
     const char *nm = sp->name;
     if (o->kind == RT_QUAD) {
-        const fx_vec3 a = o->b, b = o->c;
+        const fx_vec3 a = o->u.quad.edge1, b = o->u.quad.edge2;
         if (a.x == 0 && a.y == 0 && a.z == 0)
             return degenerate(p, &at[1], nm, "edge1 must not be zero");
         if (b.x == 0 && b.y == 0 && b.z == 0)
@@ -266,21 +286,27 @@ static rt_status check_shape(rt_lex *p, const rt_lex_token *kw,
             return degenerate(p, &at[2], nm,
                               "edge1 and edge2 are parallel");
     } else if (o->kind == RT_BOX) {
-        if (o->b.x <= o->a.x)
+        const fx_vec3 lo = o->u.box.min, hi = o->u.box.max;
+        if (hi.x <= lo.x)
             return degenerate(p, &at[1], nm, "max x must be > min x");
-        if (o->b.y <= o->a.y)
+        if (hi.y <= lo.y)
             return degenerate(p, &at[1], nm, "max y must be > min y");
-        if (o->b.z <= o->a.z)
+        if (hi.z <= lo.z)
             return degenerate(p, &at[1], nm, "max z must be > min z");
-    } else {
-        if (o->r <= 0)
+    } else if (o->kind == RT_SPHERE) {
+        if (o->u.sphere.radius <= 0)
             return degenerate(p, &at[key_of(sp, F_R)], nm,
                               "radius must be > 0");
-        if (o->kind != RT_SPHERE && o->h <= 0)
+    } else {
+        const fx_t r = o->u.upright.radius, h = o->u.upright.height;
+        if (r <= 0)
+            return degenerate(p, &at[key_of(sp, F_R)], nm,
+                              "radius must be > 0");
+        if (h <= 0)
             return degenerate(p, &at[key_of(sp, F_H)], nm,
                               "height must be > 0");
         /* rt_upright.c's RT_MAX_CONE_SLOPE, as docs/numerics.md states. */
-        if (o->kind == RT_CONE && fx_div(o->r, o->h) > FX_INT(64))
+        if (o->kind == RT_CONE && fx_div(r, h) > FX_INT(64))
             return degenerate(p, &at[key_of(sp, F_R)], nm,
                               "radius / height must be at most 64");
     }
@@ -324,19 +350,14 @@ rt_status rt_parse_object(rt_lex *p, const rt_lex_token *kw, int kind,
         const char *key = keys[k];
         switch (sp->field[k]) {
         case F_A:
-            TRY(rt_lex_get_vec(p, key, &o->a));
-            break;
         case F_B:
-            TRY(rt_lex_get_vec(p, key, &o->b));
-            break;
         case F_C:
-            TRY(rt_lex_get_vec(p, key, &o->c));
+            TRY(rt_lex_get_vec(p, key, vec_field(o, sp->field[k])));
             break;
         case F_R:
-            TRY(rt_lex_get_fxs(p, key, NULL, 1, &o->r, FX_MIN, FX_MAX, ""));
-            break;
         case F_H:
-            TRY(rt_lex_get_fxs(p, key, NULL, 1, &o->h, FX_MIN, FX_MAX, ""));
+            TRY(rt_lex_get_fxs(p, key, NULL, 1, fx_field(o, sp->field[k]),
+                               FX_MIN, FX_MAX, ""));
             break;
         case F_MAT: {
             int m;

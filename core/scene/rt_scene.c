@@ -4,6 +4,10 @@
 #include "rt_libc.h"
 #include "rt_scene.h"
 
+/* rt_object is 128 bytes on every target (its union's size_ member): a
+ * power of two, so indexing rt_scene.obj is a shift. */
+typedef char rt_object_size_check[sizeof(rt_object) == 128 ? 1 : -1];
+
 void rt_scene_init(rt_scene *s)
 {
     memset(s, 0, sizeof *s);

@@ -100,47 +100,104 @@ typedef enum {
 #define RT_CAP_TOP 2u
 
 /* Fraction bits of the frame cylinders and cones are solved in
- * (core/shapes/rt_upright.c), and of a cone's slope rt_object.k. */
+ * (core/shapes/rt_upright.c), and of a cone's slope rt_upright.slope. */
 #define RT_FRAME_BITS 24
 
+/* Each kind's record: the fields the scene gives, then those
+ * rt_object_prepare() derives. Coordinates are world units in Q16.16; a
+ * unit vector (fx_dir3) has RT_UNIT_BITS fraction bits. Every record
+ * starts with a point, the one its texture cells count from (rt_object's
+ * u.origin reads it for any kind). A record's byte field follows that
+ * point, within the first 32 bytes of rt_object, where a Cortex-M0 loads
+ * a byte with one instruction. */
+
+/* A sphere. */
 typedef struct {
-    uint8_t kind;     /* rt_kind */
+    fx_vec3 center;
+    fx_t radius;         /* > 0 */
+    /* Derived. */
+    uint32_t inv_radius; /* (2^(31 + b) - 1) / radius, b the bit length of
+                            radius (below 2^32): the normal is
+                            (p - center) inv_radius / 2^(b + 1) */
+} rt_sphere;
+
+/* A quad: the parallelogram corner + s edge1 + t edge2, s and t in
+ * [0, 1]. */
+typedef struct {
+    fx_vec3 corner;
+    uint8_t flat;   /* derived: 1 if normal is along y, axis_u along z and
+                       axis_v along x; 2 if normal along y, axis_u along x,
+                       axis_v along z (the intersection skips the zero
+                       terms); else 0 */
+    fx_vec3 edge1;  /* nonzero */
+    fx_vec3 edge2;  /* nonzero, not parallel to edge1 */
+    /* Derived. */
+    fx_dir3 normal; /* unit normal, norm(edge1 x edge2) */
+    fx_dir3 axis_u; /* unit in-plane axis, norm(edge2 x normal) */
+    fx_dir3 axis_v; /* unit in-plane axis, norm(normal x edge1) */
+    fx_t len_u;     /* > 0: a point p of the quad has
+                       0 <= (p - corner).axis_u <= len_u */
+    fx_t len_v;     /* > 0: likewise 0 <= (p - corner).axis_v <= len_v */
+    fx_t dist;      /* normal . corner, rounded and saturated: only a flat
+                       quad, whose dist is exact, uses it */
+} rt_quad;
+
+/* An axis-aligned box. */
+typedef struct {
+    fx_vec3 min; /* the low corner */
+    fx_vec3 max; /* the high corner, above min on every axis */
+} rt_box;
+
+/* A cylinder or a cone (rt_object.kind tells which), standing on its
+ * base along +y; a cone's apex is at base + (0, height, 0). */
+typedef struct {
+    fx_vec3 base;       /* centre of the base */
+    int8_t frame_shift; /* derived: the shape is solved in the frame
+                           centred on rt_object.bc and scaled by
+                           2^-frame_shift (exact), which brings
+                           rt_object.br into (1/2, 1] */
+    fx_t radius;        /* > 0; a cone's at its base */
+    fx_t height;        /* > 0 */
+    /* Derived, cones only. */
+    fx_t slope;         /* radius / height with RT_FRAME_BITS fraction bits
+                           (not Q16.16), in (0, 2^30] */
+    uint32_t thin;      /* the height below the apex within which the
+                           radius is below 2^-6 of the frame, with
+                           RT_FRAME_BITS fraction bits (2^42 / slope, at
+                           most 2^32 - 1) */
+} rt_upright;
+
+/* A triangle mesh. */
+typedef struct {
+    fx_vec3 origin;               /* where its texture cells count from;
+                                     the parser sets (0, 0, 0), as the
+                                     vertices are in world space */
+    const struct rt_mesh *tables; /* its triangles, in world space, and
+                                     their hierarchy (rt_mesh.h; caller-
+                                     owned, not copied) */
+} rt_mesh_ref;
+
+/* An object: its kind and material, its kind's record in u (a named
+ * member: C99 has no anonymous unions), and its bounding sphere. */
+typedef struct {
+    uint8_t kind;     /* rt_kind; selects the member of u */
     uint8_t material; /* index into rt_scene.mat */
-    uint8_t caps;     /* RT_CAP_* */
+    uint8_t caps;     /* RT_CAP_*: cylinders (both), cones (bottom only) */
     uint8_t convex;   /* derived: a ray leaving the surface cannot re-hit it */
     uint8_t small;    /* derived: bounding sphere within 8192 units (the
                          32-bit intersection path applies) */
-    uint8_t flat;     /* derived, quads: 1 if n is along y, pu along z and
-                         pv along x; 2 if n along y, pu along x, pv along z
-                         (the intersection skips the zero terms); else 0 */
-    int8_t ushift;    /* derived: cylinders and cones are solved in the
-                         frame centred on bc and scaled by 2^-ushift
-                         (exact), which brings br into (1/2, 1] */
-    fx_vec3 a;        /* sphere: centre; quad: corner; box: min;
-                         cylinder, cone: base centre */
-    fx_vec3 b;        /* quad: edge1; box: max */
-    fx_vec3 c;        /* quad: edge2 */
-    fx_t r;           /* sphere, cylinder, cone: radius */
-    fx_t h;           /* cylinder, cone: height */
-    /* Derived by rt_object_prepare(). */
-    fx_dir3 n;        /* quad: unit normal, norm(edge1 x edge2) */
-    fx_dir3 pu, pv;   /* quad: unit in-plane axes across edge2 and edge1 */
-    fx_t lu, lv;      /* quad: 0 <= (p - a).pu <= lu, 0 <= (p - a).pv <= lv */
-    fx_t dist;        /* quad: n . a, rounded and saturated: only a flat
-                         quad, whose dist is exact, uses it */
-    fx_vec3 bc;       /* bounding sphere centre */
-    fx_t br;          /* bounding sphere radius */
-    const struct rt_mesh *mesh; /* mesh: its triangles, in world space, and
-                         their hierarchy (caller-owned, not copied); here,
-                         in ushift's place, rt_object stays 128 bytes on
-                         32-bit targets (a power of two to index) */
-    uint32_t rinv;    /* sphere: (2^(31 + b) - 1) / r, b the bit length of
-                         r: the normal is (p - a) rinv / 2^(b + 1); cone:
-                         the height below its apex within which its radius
-                         is below 2^-6 of its frame, with RT_FRAME_BITS
-                         fraction bits (2^42 / k, at most 2^32 - 1) */
-    fx_t k;           /* cone: slope r / h with RT_FRAME_BITS fraction bits
-                         (not Q16.16) */
+    union {
+        fx_vec3 origin;       /* any kind's first point (see above) */
+        rt_sphere sphere;     /* RT_SPHERE */
+        rt_quad quad;         /* RT_QUAD */
+        rt_box box;           /* RT_BOX */
+        rt_upright upright;   /* RT_CYLINDER, RT_CONE */
+        rt_mesh_ref mesh;     /* RT_MESH */
+        uint32_t size_[26];   /* makes rt_object 128 bytes, a power of two
+                                 to index (rt_scene.c checks it) */
+    } u;
+    fx_vec3 bc;       /* derived: bounding sphere centre */
+    fx_t br;          /* derived: bounding sphere radius */
 } rt_object;
 
 typedef struct {

@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * rt_box: axis-aligned boxes (corners a < b), by slabs after the bounding
- * sphere. The hit's part is the axis of the face; a face's distance is
- * taken as a flat quad's (rt_plane_t), so a face lying in a floor's plane
- * ties with it exactly.
+ * rt_box: axis-aligned boxes (corners min < max), by slabs after the
+ * bounding sphere. The hit's part is the axis of the face; a face's
+ * distance is taken as a flat quad's (rt_plane_t), so a face lying in a
+ * floor's plane ties with it exactly.
  *
  * Part of the dispatch unit: rt_shape.c includes this file (its comment
  * says why); compiled alone it defines nothing.
@@ -13,12 +13,13 @@
 
 static inline rt_status box_prepare(rt_object *o)
 {
-    if (o->b.x <= o->a.x || o->b.y <= o->a.y || o->b.z <= o->a.z)
+    const fx_vec3 lo = o->u.box.min, hi = o->u.box.max;
+    if (hi.x <= lo.x || hi.y <= lo.y || hi.z <= lo.z)
         return RT_ERR_DEGENERATE;
-    fx_vec3 half = fx_v3((fx_t)(((int64_t)o->b.x - o->a.x) / 2),
-                         (fx_t)(((int64_t)o->b.y - o->a.y) / 2),
-                         (fx_t)(((int64_t)o->b.z - o->a.z) / 2));
-    o->bc = fx_v3_add(o->a, half);
+    fx_vec3 half = fx_v3((fx_t)(((int64_t)hi.x - lo.x) / 2),
+                         (fx_t)(((int64_t)hi.y - lo.y) / 2),
+                         (fx_t)(((int64_t)hi.z - lo.z) / 2));
+    o->bc = fx_v3_add(lo, half);
     o->br = fx_add(fx_v3_length(half), RT_BOUND_MARGIN);
     o->convex = 1;
     return RT_OK;
@@ -62,8 +63,9 @@ static inline int box_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t t
     }
     /* Arrays, not pointers into the structs: indexing &v.x past x is
      * undefined behaviour. */
-    const fx_t lo[3] = { o->a.x, o->a.y, o->a.z };
-    const fx_t hi[3] = { o->b.x, o->b.y, o->b.z };
+    const fx_vec3 bmin = o->u.box.min, bmax = o->u.box.max;
+    const fx_t lo[3] = { bmin.x, bmin.y, bmin.z };
+    const fx_t hi[3] = { bmax.x, bmax.y, bmax.z };
     const fx_t org[3] = { r->o.x, r->o.y, r->o.z };
     const int32_t dir[3] = { r->d.x, r->d.y, r->d.z };
     fx_t tn = FX_MIN, tf = FX_MAX;

@@ -415,7 +415,7 @@ static inline int leaf_hit(const rt_mesh *m, const rt_mesh_node *nd,
 int rt_mesh_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                 fx_t *t, uint16_t *tri)
 {
-    const rt_mesh *m = o->mesh;
+    const rt_mesh *m = o->u.mesh.tables;
     /* Every vertex and box lies within br of bc (rt_mesh_prepare), and
      * the L1 distance bounds the Euclidean one. */
     const int64_t cx = (int64_t)o->bc.x - r->o.x;

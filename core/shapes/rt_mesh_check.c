@@ -97,7 +97,7 @@ static fx_t dist_up(int64_t dx, int64_t dy, int64_t dz)
 
 rt_status rt_mesh_prepare(rt_object *o)
 {
-    const rt_mesh *m = o->mesh;
+    const rt_mesh *m = o->u.mesh.tables;
     if (!m || !m->v || !m->tri || !m->node || m->n_tris == 0 ||
         m->n_verts == 0 || m->n_nodes == 0 || m->depth > RT_MESH_DEPTH ||
         m->qshift > 16)

@@ -10,7 +10,7 @@
 
 fx_dir3 rt_mesh_normal(const rt_object *o, fx_vec3 p, unsigned tri)
 {
-    const rt_mesh *m = o->mesh;
+    const rt_mesh *m = o->u.mesh.tables;
     const uint16_t *ix = &m->tri[3u * tri];
     const fx_vec3 a = m->v[ix[0]], b = m->v[ix[1]], c = m->v[ix[2]];
     const fx_dir3 n = fx_d3_cross_unit(fx_v3_sub(b, a), fx_v3_sub(c, a));

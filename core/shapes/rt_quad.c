@@ -1,11 +1,13 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * rt_quad: parallelograms (corner a, edges b and c). A quad is tested
- * against its plane first, which costs as little as a bounding sphere and
- * rejects a ray leaving the plane's side at once, then by its in-plane
- * coordinates along the unit axes pu and pv. The normal is the prepared
- * unit n. A flat quad (normal along y, axes along x and z: a floor) skips
- * the zero terms.
+ * rt_quad: parallelograms. Below, a is the corner, e1 and e2 the edges,
+ * n the unit normal, pu and pv the unit in-plane axes (axis_u, axis_v)
+ * and lu and lv the quad's extents along them (len_u, len_v: rt_quad in
+ * rt_scene.h). A quad is tested against its plane first, which costs as
+ * little as a bounding sphere and rejects a ray leaving the plane's side
+ * at once, then by its in-plane coordinates along pu and pv. The normal
+ * is the prepared n. A flat quad (normal along y, axes along x and z: a
+ * floor) skips the zero terms.
  *
  * Part of the dispatch unit: rt_shape.c includes this file (its comment
  * says why); compiled alone it defines nothing.
@@ -24,29 +26,32 @@ static int is_zero(fx_vec3 v)
 
 static inline rt_status quad_prepare(rt_object *o)
 {
-    fx_vec3 e1 = o->b, e2 = o->c;
+    rt_quad *qd = &o->u.quad;
+    qd->flat = 0;
+    fx_vec3 e1 = qd->edge1, e2 = qd->edge2;
     if (is_zero(e1) || is_zero(e2))
         return RT_ERR_DEGENERATE;
-    o->n = fx_d3_cross_unit(e1, e2);
-    if (o->n.x == 0 && o->n.y == 0 && o->n.z == 0)
+    qd->normal = fx_d3_cross_unit(e1, e2);
+    if (qd->normal.x == 0 && qd->normal.y == 0 && qd->normal.z == 0)
         return RT_ERR_DEGENERATE; /* parallel edges */
-    o->pu = fx_d3_cross_unit(e2, fx_d3_raw(o->n));
-    o->pv = fx_d3_cross_unit(fx_d3_raw(o->n), e1);
-    o->lu = fx_pd_dot(e1, o->pu);
-    o->lv = fx_pd_dot(e2, o->pv);
-    if (o->lu <= 0 || o->lv <= 0)
+    qd->axis_u = fx_d3_cross_unit(e2, fx_d3_raw(qd->normal));
+    qd->axis_v = fx_d3_cross_unit(fx_d3_raw(qd->normal), e1);
+    qd->len_u = fx_pd_dot(e1, qd->axis_u);
+    qd->len_v = fx_pd_dot(e2, qd->axis_v);
+    if (qd->len_u <= 0 || qd->len_v <= 0)
         return RT_ERR_DEGENERATE;
-    o->dist = fx_pd_dot(o->a, o->n);
-    if (o->n.x == 0 && o->n.z == 0 && o->pu.y == 0 && o->pv.y == 0) {
-        if (o->pu.x == 0 && o->pv.z == 0)
-            o->flat = 1; /* pu along z, pv along x */
-        else if (o->pu.z == 0 && o->pv.x == 0)
-            o->flat = 2; /* pu along x, pv along z */
+    qd->dist = fx_pd_dot(qd->corner, qd->normal);
+    if (qd->normal.x == 0 && qd->normal.z == 0 && qd->axis_u.y == 0 &&
+        qd->axis_v.y == 0) {
+        if (qd->axis_u.x == 0 && qd->axis_v.z == 0)
+            qd->flat = 1; /* pu along z, pv along x */
+        else if (qd->axis_u.z == 0 && qd->axis_v.x == 0)
+            qd->flat = 2; /* pu along x, pv along z */
     }
     /* Centre a + (e1 + e2) / 2, radius half the longer diagonal. */
     fx_vec3 half1 = fx_v3(e1.x / 2, e1.y / 2, e1.z / 2);
     fx_vec3 half2 = fx_v3(e2.x / 2, e2.y / 2, e2.z / 2);
-    o->bc = fx_v3_add(o->a, fx_v3_add(half1, half2));
+    o->bc = fx_v3_add(qd->corner, fx_v3_add(half1, half2));
     fx_t d1 = fx_v3_length(fx_v3_add(half1, half2));
     fx_t d2 = fx_v3_length(fx_v3_sub(half1, half2));
     /* The margin covers the halving above (under an ulp per component of
@@ -61,8 +66,10 @@ static inline rt_status quad_prepare(rt_object *o)
  * for none (a ray parallel to it or leaving its side, or t >= 2^32). */
 static uint32_t quad_t(const rt_object *o, const rt_ray *r)
 {
-    const int flat = o->flat;
-    int64_t den = flat ? fx_imul64(r->d.y, o->n.y) : fx_d3_dot_raw(r->d, o->n);
+    const rt_quad *qd = &o->u.quad;
+    const int flat = qd->flat;
+    int64_t den = flat ? fx_imul64(r->d.y, qd->normal.y)
+                       : fx_d3_dot_raw(r->d, qd->normal);
     if (den < RT_PAR_DOT && den > -RT_PAR_DOT)
         return 0xFFFFFFFFu;
     /* num = (a - o).n, the plane's distance from the origin, with 16 +
@@ -74,13 +81,13 @@ static uint32_t quad_t(const rt_object *o, const rt_ray *r)
      * FX_UBITS fraction bits. */
     int64_t num;
     if (flat)
-        num = (int64_t)o->dist * FX_UONE - fx_imul64(r->o.y, o->n.y);
+        num = (int64_t)qd->dist * FX_UONE - fx_imul64(r->o.y, qd->normal.y);
     else if (o->small && r->small)
-        num = fx_imul64(o->a.x - r->o.x, o->n.x) +
-              fx_imul64(o->a.y - r->o.y, o->n.y) +
-              fx_imul64(o->a.z - r->o.z, o->n.z);
+        num = fx_imul64(qd->corner.x - r->o.x, qd->normal.x) +
+              fx_imul64(qd->corner.y - r->o.y, qd->normal.y) +
+              fx_imul64(qd->corner.z - r->o.z, qd->normal.z);
     else
-        num = fx_pd_dot_diff_raw(o->a, r->o, o->n);
+        num = fx_pd_dot_diff_raw(qd->corner, r->o, qd->normal);
     if ((num < 0) != (den < 0))
         return 0xFFFFFFFFu;
     /* t = num 2^FX_UBITS / den in Q16.16, both of one sign, rounded: a
@@ -112,10 +119,11 @@ static uint32_t quad_t(const rt_object *o, const rt_ray *r)
  * (the floor quad of most scenes, which every camera ray tests). */
 static inline uint32_t floor_quad_t(const rt_object *o, const rt_ray *r)
 {
-    const int up = o->n.y > 0;
+    const rt_quad *qd = &o->u.quad;
+    const int up = qd->normal.y > 0;
     const int32_t sdy = up ? r->d.y : -r->d.y;
     const uint32_t ud = (uint32_t)(sdy < 0 ? -sdy : sdy);
-    const int64_t m = (int64_t)o->dist - (up ? r->o.y : -(int64_t)r->o.y);
+    const int64_t m = (int64_t)qd->dist - (up ? r->o.y : -(int64_t)r->o.y);
     /* The side first: a ray heading away from the plane needs no more. */
     if ((m < 0) != (sdy < 0))
         return 0xFFFFFFFFu;
@@ -134,11 +142,12 @@ static inline uint32_t floor_quad_t(const rt_object *o, const rt_ray *r)
 static inline int quad_uv_wide(const rt_object *o, const rt_ray *r,
                                fx_t tt, int64_t *pu64, int64_t *pv64)
 {
-    const int flat = o->flat;
+    const rt_quad *qd = &o->u.quad;
+    const int flat = qd->flat;
     int64_t u, v;
-    int64_t qx = (int64_t)r->o.x - o->a.x +
+    int64_t qx = (int64_t)r->o.x - qd->corner.x +
                  ((fx_imul64(tt, r->d.x) + UHALF) >> FX_UBITS);
-    int64_t qz = (int64_t)r->o.z - o->a.z +
+    int64_t qz = (int64_t)r->o.z - qd->corner.z +
                  ((fx_imul64(tt, r->d.z) + UHALF) >> FX_UBITS);
     /* A point of the quad is a + s e1 + t e2 with s, t in [0, 1]:
      * each component of q = p - a is below 2^32. Past that it is
@@ -148,30 +157,30 @@ static inline int quad_uv_wide(const rt_object *o, const rt_ray *r,
     if (qx >= qlim || qx <= -qlim || qz >= qlim || qz <= -qlim)
         return 0;
     if (flat == 1) { /* pu = (0, 0, pu.z), pv = (pv.x, 0, 0) */
-        u = mul_q(qz, o->pu.z);
-        v = mul_q(qx, o->pv.x);
+        u = mul_q(qz, qd->axis_u.z);
+        v = mul_q(qx, qd->axis_v.x);
     } else if (flat == 2) { /* pu = (pu.x, 0, 0), pv = (0, 0, pv.z) */
-        u = mul_q(qx, o->pu.x);
-        v = mul_q(qz, o->pv.z);
+        u = mul_q(qx, qd->axis_u.x);
+        v = mul_q(qz, qd->axis_v.z);
     } else {
-        int64_t qy = (int64_t)r->o.y - o->a.y +
+        int64_t qy = (int64_t)r->o.y - qd->corner.y +
                      ((fx_imul64(tt, r->d.y) + UHALF) >> FX_UBITS);
         if (qx == (int32_t)qx && qy == (int32_t)qy &&
             qz == (int32_t)qz) {
             /* The usual case: 32-bit operands, the same sums. */
             const int32_t x = (int32_t)qx, y = (int32_t)qy;
             const int32_t z = (int32_t)qz;
-            u = fx_imul64(x, o->pu.x) + fx_imul64(y, o->pu.y) +
-                fx_imul64(z, o->pu.z);
-            v = fx_imul64(x, o->pv.x) + fx_imul64(y, o->pv.y) +
-                fx_imul64(z, o->pv.z);
+            u = fx_imul64(x, qd->axis_u.x) + fx_imul64(y, qd->axis_u.y) +
+                fx_imul64(z, qd->axis_u.z);
+            v = fx_imul64(x, qd->axis_v.x) + fx_imul64(y, qd->axis_v.y) +
+                fx_imul64(z, qd->axis_v.z);
         } else {
             if (qy >= qlim || qy <= -qlim)
                 return 0;
             /* |q| < 2^33 and |pu| = 1: every partial sum below
              * 2^63. */
-            u = qx * o->pu.x + qy * o->pu.y + qz * o->pu.z;
-            v = qx * o->pv.x + qy * o->pv.y + qz * o->pv.z;
+            u = qx * qd->axis_u.x + qy * qd->axis_u.y + qz * qd->axis_u.z;
+            v = qx * qd->axis_v.x + qy * qd->axis_v.y + qz * qd->axis_v.z;
         }
     }
     *pu64 = u;
@@ -184,27 +193,28 @@ static inline int quad_uv_wide(const rt_object *o, const rt_ray *r,
 static inline int quad_uv(const rt_object *o, const rt_ray *r, fx_t tt,
                           int64_t *pu, int64_t *pv)
 {
-    const int flat = o->flat;
+    const rt_quad *qd = &o->u.quad;
+    const int flat = qd->flat;
     if (!(o->small && r->small && (uint32_t)tt < ((uint32_t)1 << 29)))
         return quad_uv_wide(o, r, tt, pu, pv);
     /* The usual case, in 32 bits: a within 2^30 (its ball within 2^29,
      * quad_prepare), o within 2^29 and t d rounded within 2^29, so each
      * component of q is below 2^31, and mul_round_u is the rounding of
      * quad_uv_wide. */
-    const int32_t x = r->o.x - o->a.x + mul_round_u(tt, r->d.x);
-    const int32_t z = r->o.z - o->a.z + mul_round_u(tt, r->d.z);
+    const int32_t x = r->o.x - qd->corner.x + mul_round_u(tt, r->d.x);
+    const int32_t z = r->o.z - qd->corner.z + mul_round_u(tt, r->d.z);
     if (flat == 1) {
-        *pu = fx_imul64(z, o->pu.z);
-        *pv = fx_imul64(x, o->pv.x);
+        *pu = fx_imul64(z, qd->axis_u.z);
+        *pv = fx_imul64(x, qd->axis_v.x);
     } else if (flat == 2) {
-        *pu = fx_imul64(x, o->pu.x);
-        *pv = fx_imul64(z, o->pv.z);
+        *pu = fx_imul64(x, qd->axis_u.x);
+        *pv = fx_imul64(z, qd->axis_v.z);
     } else {
-        const int32_t y = r->o.y - o->a.y + mul_round_u(tt, r->d.y);
-        *pu = fx_imul64(x, o->pu.x) + fx_imul64(y, o->pu.y) +
-              fx_imul64(z, o->pu.z);
-        *pv = fx_imul64(x, o->pv.x) + fx_imul64(y, o->pv.y) +
-              fx_imul64(z, o->pv.z);
+        const int32_t y = r->o.y - qd->corner.y + mul_round_u(tt, r->d.y);
+        *pu = fx_imul64(x, qd->axis_u.x) + fx_imul64(y, qd->axis_u.y) +
+              fx_imul64(z, qd->axis_u.z);
+        *pv = fx_imul64(x, qd->axis_v.x) + fx_imul64(y, qd->axis_v.y) +
+              fx_imul64(z, qd->axis_v.z);
     }
     return 1;
 }
@@ -212,8 +222,10 @@ static inline int quad_uv(const rt_object *o, const rt_ray *r, fx_t tt,
 static inline int quad_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                 fx_t *t, uint16_t *part)
 {
-    /* A flat quad (rt_object.flat) has n = (0, n.y, 0). */
-    const uint32_t tq = o->flat && (o->n.y == FX_UONE || o->n.y == -FX_UONE)
+    const rt_quad *qd = &o->u.quad;
+    /* A flat quad (rt_quad.flat) has n = (0, n.y, 0). */
+    const uint32_t tq = qd->flat && (qd->normal.y == FX_UONE ||
+                                     qd->normal.y == -FX_UONE)
                             ? floor_quad_t(o, r)
                             : quad_t(o, r);
     /* 0xFFFFFFFF (none) is beyond FX_MAX. */
@@ -227,9 +239,9 @@ static inline int quad_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t 
      * of u and v in [0, lu 2^(FX_UBITS - 32)) and [0, lv 2^(FX_UBITS -
      * 32)) are inside them (lu, lv > 0, quad_prepare). */
     if ((uint32_t)((uint64_t)u >> 32) <
-            (uint32_t)o->lu >> ((32 - FX_UBITS) & 31) &&
+            (uint32_t)qd->len_u >> ((32 - FX_UBITS) & 31) &&
         (uint32_t)((uint64_t)v >> 32) <
-            (uint32_t)o->lv >> ((32 - FX_UBITS) & 31)) {
+            (uint32_t)qd->len_v >> ((32 - FX_UBITS) & 31)) {
         *t = tt;
         *part = 0;
         return 1;
@@ -240,9 +252,9 @@ static inline int quad_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t 
      * that grows with the quad. Adjacent quads overlap by that much
      * instead of leaving a crack. */
     const int64_t sl = ((int64_t)RT_QUAD_SLACK << FX_UBITS) +
-                       (((int64_t)o->lu + o->lv) >> 1);
-    if (u < -sl || v < -sl || u > (int64_t)o->lu * FX_UONE + sl ||
-        v > (int64_t)o->lv * FX_UONE + sl)
+                       (((int64_t)qd->len_u + qd->len_v) >> 1);
+    if (u < -sl || v < -sl || u > (int64_t)qd->len_u * FX_UONE + sl ||
+        v > (int64_t)qd->len_v * FX_UONE + sl)
         return 0;
     *t = tt;
     *part = 0;

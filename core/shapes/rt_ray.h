@@ -47,15 +47,17 @@ static inline void rt_ray_set(rt_ray *r, fx_vec3 o, fx_dir3 d)
  * 2^k (this k; a power of two, so offsetting needs no product):
  * shading offsets secondary and shadow rays by it, and the direction grids
  * (rt_dirgrid.c) widen their cones by it, so the two must agree.
- * Cylinders and cones are solved in a frame whose unit is 2^ushift ulps,
- * so a ray's root on its own surface is off by about that much over the
- * cosine of its angle to the surface. Starting it 4 frame units off the
- * surface (never less than RT_EPS) keeps that root behind it at any angle:
- * no acne on large open shapes' inner walls. At most 2^17. */
+ * Cylinders and cones are solved in a frame whose unit is 2^frame_shift
+ * ulps (rt_upright), so a ray's root on its own surface is off by about
+ * that much over the cosine of its angle to the surface. Starting it 4
+ * frame units off the surface (never less than RT_EPS) keeps that root
+ * behind it at any angle: no acne on large open shapes' inner walls. At
+ * most 2^17. */
 static inline unsigned rt_origin_log2(const rt_object *o)
 {
-    if ((o->kind == RT_CYLINDER || o->kind == RT_CONE) && o->ushift > 4)
-        return (unsigned)o->ushift + 2u;
+    if ((o->kind == RT_CYLINDER || o->kind == RT_CONE) &&
+        o->u.upright.frame_shift > 4)
+        return (unsigned)o->u.upright.frame_shift + 2u;
     return RT_EPS_LOG2;
 }
 

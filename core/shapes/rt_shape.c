@@ -40,7 +40,6 @@ RT_NOINLINE static int mesh_hit(const rt_object *o, const rt_ray *r,
 rt_status rt_object_prepare(rt_object *o)
 {
     rt_status st;
-    o->flat = 0;
     switch (o->kind) {
     case RT_SPHERE:
         st = sphere_prepare(o);
@@ -122,5 +121,5 @@ fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *p,
     default:
         break;
     }
-    return o->n; /* a quad's; a removed kind is never hit */
+    return o->u.quad.normal; /* a quad's; a removed kind is never hit */
 }

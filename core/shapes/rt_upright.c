@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * rt_upright: cylinders and cones (base centre a, radius r, height h,
- * standing along +y), solved in a frame of their own (see
+ * rt_upright: cylinders and cones (base centre a, radius r, height h:
+ * rt_upright's base, radius and height; standing along +y), solved in a frame of their own (see
  * docs/numerics.md): after the bounding-sphere test, the side's quadratic
  * in a frame centred on that sphere and scaled by a power of two, so its
  * coefficients are near 1 whatever the object's size or distance, and the
@@ -30,20 +30,21 @@ static fx_t scale_pow2(fx_t v, int k)
  * height h. */
 static rt_status upright_bounds(rt_object *o)
 {
-    fx_t hh = o->h / 2;
+    rt_upright *up = &o->u.upright;
+    fx_t hh = up->height / 2;
     int k = 0;
-    if (o->r <= 0 || o->h <= 0)
+    if (up->radius <= 0 || up->height <= 0)
         return RT_ERR_DEGENERATE;
-    o->bc = fx_v3(o->a.x, fx_add(o->a.y, hh), o->a.z);
-    o->br = fx_add(fx_v3_length(fx_v3(o->r, hh, 0)), RT_BOUND_MARGIN);
+    o->bc = fx_v3(up->base.x, fx_add(up->base.y, hh), up->base.z);
+    o->br = fx_add(fx_v3_length(fx_v3(up->radius, hh, 0)), RT_BOUND_MARGIN);
     while (k < 15 && ((int64_t)o->br >> k) > FX_ONE)
         k++;
     while (k <= 0 && k > -15 && ((int64_t)o->br << -k) <= FX_HALF)
         k--;
-    o->ushift = (int8_t)k;
+    up->frame_shift = (int8_t)k;
     /* Radius and half height with 16 fraction bits in the frame: both
      * must be nonzero (rt_parse_obj.c states the limit). */
-    if (scale_pow2(o->r, k) == 0 || scale_pow2(hh, k) == 0)
+    if (scale_pow2(up->radius, k) == 0 || scale_pow2(hh, k) == 0)
         return RT_ERR_DEGENERATE;
     return RT_OK;
 }
@@ -55,25 +56,27 @@ static rt_status upright_bounds(rt_object *o)
  * likewise, as one nappe's solid is convex. */
 static inline rt_status upright_prepare(rt_object *o)
 {
+    rt_upright *up = &o->u.upright;
     o->convex = 1;
     if (o->kind == RT_CYLINDER)
         return upright_bounds(o);
     o->caps &= RT_CAP_BOTTOM;
-    if (o->r <= 0 || o->h <= 0)
+    if (up->radius <= 0 || up->height <= 0)
         return RT_ERR_DEGENERATE;
-    const fx_t k16 = fx_div(o->r, o->h);
+    const fx_t k16 = fx_div(up->radius, up->height);
     if (k16 > RT_MAX_CONE_SLOPE || k16 == 0)
         return RT_ERR_DEGENERATE;
     /* The slope with RT_FRAME_BITS fraction bits, to nearest: r / h <= 64
      * keeps it below 2^30. */
-    o->k = (fx_t)fx_udiv64_32(((uint64_t)(uint32_t)o->r << RT_FRAME_BITS) +
-                                  (uint32_t)o->h / 2,
-                              (uint32_t)o->h);
+    up->slope = (fx_t)fx_udiv64_32(
+        ((uint64_t)(uint32_t)up->radius << RT_FRAME_BITS) +
+            (uint32_t)up->height / 2,
+        (uint32_t)up->height);
     /* Where the cone is thin (thin_side): 2^-6 of the frame over k, both
      * with RT_FRAME_BITS fraction bits. */
     const uint64_t th =
-        ((uint64_t)1 << (2 * RT_FRAME_BITS - 6)) / (uint32_t)o->k;
-    o->rinv = th > UINT32_MAX ? UINT32_MAX : (uint32_t)th;
+        ((uint64_t)1 << (2 * RT_FRAME_BITS - 6)) / (uint32_t)up->slope;
+    up->thin = th > UINT32_MAX ? UINT32_MAX : (uint32_t)th;
     return upright_bounds(o);
 }
 
@@ -84,7 +87,7 @@ static inline rt_status upright_prepare(rt_object *o)
 
 /* A cone's side root where its radius k (yt - y) is below this (2^-6 of
  * the frame, as a frame value), near the apex or anywhere on a needle, is
- * solved again in a finer frame (thin_side); rt_object.rinv holds the
+ * solved again in a finer frame (thin_side); rt_upright.thin holds the
  * height below the apex where that is. */
 #define RT_THIN_SIDE ((int64_t)1 << (RT_FRAME_BITS - 6))
 
@@ -116,6 +119,7 @@ static int thin_side(const rt_object *o, const rt_ray *r, int64_t tca,
                      const upright_frame *fr, int64_t s0, fx_t tmin,
                      fx_t *best)
 {
+    const rt_upright *up = &o->u.upright;
     const upright_frame f = *fr;
     const int32_t *d = f.d;
     const int sf = f.sf;
@@ -124,7 +128,7 @@ static int thin_side(const rt_object *o, const rt_ray *r, int64_t tca,
      * bits (|o - bc| < 2^32, |ta| < 2^32 raw), and their sum is a point
      * within the bounding sphere: x and z from the axis, and y46 the
      * height below the apex. */
-    const int64_t ay = (int64_t)o->a.y + o->h - o->bc.y;
+    const int64_t ay = (int64_t)up->base.y + up->height - o->bc.y;
     const int64_t x46 = ((int64_t)r->o.x - o->bc.x) * FX_UONE + ta * r->d.x;
     const int64_t z46 = ((int64_t)r->o.z - o->bc.z) * FX_UONE + ta * r->d.z;
     const int64_t y46 =
@@ -135,7 +139,7 @@ static int thin_side(const rt_object *o, const rt_ray *r, int64_t tca,
     const int64_t yl = y46 - yh * ((int64_t)1 << RT_FRAME_BITS);
     if (yh > (INT64_MAX >> 31) || yh < -(INT64_MAX >> 31))
         return -1;
-    const int64_t w46 = o->k * yh + ((o->k * yl) >> RT_FRAME_BITS);
+    const int64_t w46 = up->slope * yh + ((up->slope * yl) >> RT_FRAME_BITS);
     const uint64_t m = (uint64_t)(x46 < 0 ? -x46 : x46) |
                        (uint64_t)(z46 < 0 ? -z46 : z46) |
                        (uint64_t)(w46 < 0 ? -w46 : w46);
@@ -153,7 +157,7 @@ static int thin_side(const rt_object *o, const rt_ray *r, int64_t tca,
     const int64_t qy = shift_round_cold(y46, n); /* height below the apex */
     /* The cone's coefficients there, as in upright_hit; a is the same at
      * any scale. */
-    const int32_t kdy = (int32_t)frame_round(fx_imul64(o->k, d[1]));
+    const int32_t kdy = (int32_t)frame_round(fx_imul64(up->slope, d[1]));
     const int64_t a = frame_round(fx_imul64(d[0], d[0]) +
                                   fx_imul64(d[2], d[2])) -
                       frame_round(fx_imul64(kdy, kdy));
@@ -196,6 +200,7 @@ RT_ALWAYS_INLINE static inline int upright_caps(const rt_object *o,
                                                 int32_t ur, fx_t tmin,
                                                 fx_t *best, uint16_t *part)
 {
+    const rt_upright *up = &o->u.upright;
     const int sf = f->sf;
     const int64_t rim = (int64_t)RT_RIM_SLACK << (sf > 0 ? sf : 0);
     int found = 0;
@@ -208,7 +213,7 @@ RT_ALWAYS_INLINE static inline int upright_caps(const rt_object *o,
          * cap in a floor quad's plane (a shape standing on the floor)
          * gives the very same t, so the tie goes to the earlier object
          * instead of flipping with rounding. */
-        int64_t cy = cap ? (int64_t)o->a.y + o->h : o->a.y;
+        int64_t cy = cap ? (int64_t)up->base.y + up->height : up->base.y;
         int64_t tw = rt_plane_t(cy, r->o.y, r->d.y);
         if (tw <= tmin || tw >= *best)
             continue; /* take() would refuse it */
@@ -244,6 +249,7 @@ RT_COLD static int upright_thin(const rt_object *o, const rt_ray *r,
                                 int64_t s0, fx_t tmin, fx_t tmax, int found,
                                 fx_t *t, uint16_t *part)
 {
+    const rt_upright *up = &o->u.upright;
     fx_t best = tmax;
     uint16_t pt = 0;
     int side = thin_side(o, r, tca, f, s0, tmin, &best);
@@ -263,7 +269,7 @@ RT_COLD static int upright_thin(const rt_object *o, const rt_ray *r,
             best = again;
         }
     }
-    const int32_t ur = (int32_t)shift_round_cold(o->r, -f->sf);
+    const int32_t ur = (int32_t)shift_round_cold(up->radius, -f->sf);
     found = upright_caps(o, r, tca, f, ur, tmin, &best, &pt) | side;
     if (found) {
         *t = best;
@@ -281,6 +287,7 @@ static inline int side_roots(const rt_object *o, const upright_frame *f,
                              int32_t ur, int cone, int *steep,
                              int64_t root[2])
 {
+    const rt_upright *up = &o->u.upright;
     const int32_t px = f->p[0], py = f->p[1], pz = f->p[2];
     const int32_t dx = f->d[0], dy = f->d[1], dz = f->d[2];
     /* Side: x^2 + z^2 = R(y)^2, R = ur (cylinder) or k (yt - y) (cone). */
@@ -289,10 +296,10 @@ static inline int side_roots(const rt_object *o, const upright_frame *f,
     int64_t b = frame_round(frame_mul(px, dx) + frame_mul(pz, dz));
     int64_t c = frame_round(pp - frame_mul(ur, ur));
     if (cone) {
-        /* o->k is the slope with RT_FRAME_BITS fraction bits, below 2^30;
+        /* The slope has RT_FRAME_BITS fraction bits, below 2^30;
          * ky below 2^31 (|yt - py| < 2^25). */
-        const int32_t kdy = (int32_t)frame_round(fx_imul64(o->k, dy));
-        const int64_t ky = frame_round(fx_imul64(o->k, f->yt - py));
+        const int32_t kdy = (int32_t)frame_round(fx_imul64(up->slope, dy));
+        const int64_t ky = frame_round(fx_imul64(up->slope, f->yt - py));
         a -= frame_round(frame_mul(kdy, kdy));
         b += frame_round(mul_q(ky, kdy));
         c = frame_round(pp - (ky == (int32_t)ky
@@ -316,6 +323,7 @@ static inline int side_roots(const rt_object *o, const upright_frame *f,
 static inline int upright_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
                    fx_t *t, uint16_t *part)
 {
+    const rt_upright *up = &o->u.upright;
     int64_t tca, h[3];
     uint64_t disc;
     fx_t best = tmax;
@@ -329,7 +337,7 @@ static inline int upright_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx
     const int32_t py = f.p[1], dy = f.d[1];
     const int32_t yb = f.yb, yt = f.yt;
     /* The radius in the frame, exact. */
-    const int32_t ur = (int32_t)shift_round(o->r, -f.sf);
+    const int32_t ur = (int32_t)shift_round(up->radius, -f.sf);
     const int64_t one = (int64_t)1 << RT_FRAME_BITS;
     const int n = side_roots(o, &f, ur, cone, &steep, root);
     for (int i = 0; i < n; i++) {
@@ -346,7 +354,7 @@ static inline int upright_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx
         if (y < yb - RT_RIM_SLACK ||
             (y > yt + (cone ? 0 : RT_RIM_SLACK) && !steep))
             continue;
-        /* World distance: tca + root 2^(ushift - (F - 16)). */
+        /* World distance: tca + root 2^(frame_shift - (F - 16)). */
         if (take(tca + shift_round(root[i], f.sf), tmin, &best)) {
             *part = 0;
             found = 1;
@@ -374,7 +382,7 @@ static inline int upright_hit(const rt_object *o, const rt_ray *r, fx_t tmin, fx
     for (int i = 0; cone && i < n; i++)
         if (root[i] <= 4 * one && root[i] >= -4 * one &&
             py + frame_round(frame_mul((int32_t)root[i], dy)) >
-                yt - (int64_t)o->rinv) {
+                yt - (int64_t)up->thin) {
             /* The frame again from f, not frame_set, which is large; a
              * copy, so that f itself need not be kept in memory on the
              * common path. */

@@ -11,10 +11,11 @@
 #include "rt_kinds.h"
 
 /* Cylinders and cones are solved in a frame centred on the bounding
- * sphere and scaled by 2^-ushift, so that the sphere's radius is between
- * 1/2 and 1 there, with RT_FRAME_BITS (rt_scene.h) fraction bits: a frame
- * value is a world raw value times 2^(RT_FRAME_BITS - 16 - ushift). 24
- * bits keep every product below 2^63 for cone slopes up to 64. */
+ * sphere and scaled by 2^-frame_shift (rt_upright), so that the sphere's
+ * radius is between 1/2 and 1 there, with RT_FRAME_BITS (rt_scene.h)
+ * fraction bits: a frame value is a world raw value times
+ * 2^(RT_FRAME_BITS - 16 - frame_shift). 24 bits keep every product below
+ * 2^63 for cone slopes up to 64. */
 
 /* Frame ulps by which a cylinder's side reaches past its caps' planes,
  * and world ulps (at least frame ulps) by which the caps reach past the
@@ -142,7 +143,7 @@ RT_ALWAYS_INLINE static inline int quadratic(int64_t a, int64_t b,
 }
 
 /* A cylinder's or cone's frame for one ray (upright_hit): the frame is
- * centred on the bounding sphere and scaled by 2^-ushift, with
+ * centred on the bounding sphere and scaled by 2^-frame_shift, with
  * RT_FRAME_BITS fraction bits; a frame value is a world raw value times
  * 2^sf. */
 typedef struct {
@@ -158,6 +159,7 @@ typedef struct {
 static void frame_set_wide(upright_frame *f, const rt_object *o,
                            const rt_ray *r, int64_t tca, int sf)
 {
+    const rt_upright *up = &o->u.upright;
     int64_t (*const sr)(int64_t, int) = shift_round_cold;
     const int dsh = FX_UBITS - sf;
     f->p[0] = (int32_t)(sr(tca * r->d.x, dsh) -
@@ -166,8 +168,8 @@ static void frame_set_wide(upright_frame *f, const rt_object *o,
                         sr((int64_t)o->bc.y - r->o.y, -sf));
     f->p[2] = (int32_t)(sr(tca * r->d.z, dsh) -
                         sr((int64_t)o->bc.z - r->o.z, -sf));
-    f->yb = (int32_t)sr((int64_t)o->a.y - o->bc.y, -sf);
-    f->yt = (int32_t)sr((int64_t)o->a.y + o->h - o->bc.y, -sf);
+    f->yb = (int32_t)sr((int64_t)up->base.y - o->bc.y, -sf);
+    f->yt = (int32_t)sr((int64_t)up->base.y + up->height - o->bc.y, -sf);
 }
 
 /* Sets *f for object o and ray r, whose bounding-sphere tca is given. */
@@ -175,7 +177,8 @@ RT_ALWAYS_INLINE static inline void frame_set(upright_frame *f,
                                               const rt_object *o,
                                               const rt_ray *r, int64_t tca)
 {
-    const int sf = RT_FRAME_BITS - 16 - o->ushift;
+    const rt_upright *up = &o->u.upright;
+    const int sf = RT_FRAME_BITS - 16 - up->frame_shift;
     f->sf = sf;
     /* The closest point p = o + tca d - bc in the frame, from the exact
      * o - bc and tca d (not bsphere's rounded h). Frame values near the
@@ -192,8 +195,8 @@ RT_ALWAYS_INLINE static inline void frame_set(upright_frame *f,
                             (((uint32_t)o->bc.z - r->o.z) << sf));
         /* Base and top, exact from the object's fields (the centre bc.y
          * is a.y + h/2 rounded down). */
-        f->yb = (int32_t)(((uint32_t)o->a.y - (uint32_t)o->bc.y) << sf);
-        f->yt = (int32_t)(((uint32_t)o->a.y + (uint32_t)o->h -
+        f->yb = (int32_t)(((uint32_t)up->base.y - (uint32_t)o->bc.y) << sf);
+        f->yt = (int32_t)(((uint32_t)up->base.y + (uint32_t)up->height -
                            (uint32_t)o->bc.y) << sf);
     } else {
         frame_set_wide(f, o, r, tca, sf);

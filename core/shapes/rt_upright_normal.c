@@ -171,7 +171,7 @@ static int64_t div_frac(int64_t n, int32_t h, int64_t *lo)
  * a.y + h, radius r at the base): Newton steps along d on g = |u|^2 -
  * (k W)^2, with u = p + q - a across the axis, W = ya - y the height below
  * the apex and k = r / h. k W is formed from the exact r and h, not the
- * rounded slope o->k, whose 2^-24 is itself an ulp of a tall cone's
+ * rounded slope rt_upright.slope, whose 2^-24 is itself an ulp of a tall cone's
  * hit; each quotient carries FINE_K_BITS more fraction bits (its part
  * "lo"), so every product stays within 64 bits. Also sets n to the
  * normal (u, k^2 W) there, unnormalised, with 30 fraction bits. Returns 0,
@@ -181,22 +181,24 @@ RT_COLD static int cone_step(const rt_ray *r, fx_t t, fx_vec3 p,
                              const rt_object *o, int32_t q[3], int64_t n[3],
                              int64_t *moved_t)
 {
-    const int64_t w = (int64_t)o->a.y + o->h - p.y; /* Q16.16, exact */
-    if (w <= 0 || w >= FINE_V_MAX || o->h <= 0)
+    const rt_upright *up = &o->u.upright;
+    /* Q16.16, exact */
+    const int64_t w = (int64_t)up->base.y + up->height - p.y;
+    if (w <= 0 || w >= FINE_V_MAX || up->height <= 0)
         return 0; /* the apex, or past it */
     /* k w = R + e 2^-24, Q16.16 (r w < 2^61). */
     int64_t e;
-    const int64_t rr = div_frac((int64_t)o->r * w, o->h, &e);
+    const int64_t rr = div_frac((int64_t)up->radius * w, up->height, &e);
     /* k^2 w, Q16.16, and its part below (|r R| < 2^62: R is about |u|). */
     if (rr >= FINE_V_MAX * (int64_t)2)
         return 0;
     int64_t kkw_lo;
-    const int64_t kkw = div_frac((int64_t)o->r * rr, o->h, &kkw_lo);
+    const int64_t kkw = div_frac((int64_t)up->radius * rr, up->height, &kkw_lo);
     if (kkw >= ((int64_t)1 << 32) || kkw <= -((int64_t)1 << 32))
         return 0;
     int32_t v[3];
     int64_t g0 = -rr * rr, vd = kkw * r->d.y;
-    if (!fine_start(r, t, p, o->a, q, v, &g0, &vd))
+    if (!fine_start(r, t, p, up->base, q, v, &g0, &vd))
         return 0;
     /* (k w)^2 = R^2 + 2 R e 2^-24 + e^2 2^-48: the last is below 2^-50. */
     const int64_t g1 = g0 * ((int64_t)1 << 14) -
@@ -204,7 +206,7 @@ RT_COLD static int cone_step(const rt_ray *r, fx_t t, fx_vec3 p,
     int64_t kq, kq_lo;
     for (int step = 0, more = 1; more && step < 4; step++) {
         /* k qy = kq + kq_lo 2^-24, 30 fraction bits (r qy < 2^53). */
-        kq = div_frac((int64_t)o->r * q[1], o->h, &kq_lo);
+        kq = div_frac((int64_t)up->radius * q[1], up->height, &kq_lo);
         if (kq >= ((int64_t)1 << 30) || kq <= -((int64_t)1 << 30))
             return 0; /* a flat cone's k qy, kept to 32 bits */
         /* g at p + q with 46 fraction bits: (k W)^2 = (k w)^2 -
@@ -214,20 +216,21 @@ RT_COLD static int cone_step(const rt_ray *r, fx_t t, fx_vec3 p,
                     (fx_imul64((int32_t)kq, (int32_t)kq) >> 14);
         /* den = u.d + k^2 W dy (k^2 qy from 30 fraction bits to 16
          * first). */
-        int64_t den = vd - shr_round(div_frac((int64_t)o->r * kq, o->h,
-                                              &kq_lo), 14) * r->d.y;
+        int64_t den =
+            vd - shr_round(div_frac((int64_t)up->radius * kq, up->height,
+                                    &kq_lo), 14) * r->d.y;
         fine_across(r, v, q, &g, &den);
         more = fine_move(r, g, den, q, moved_t);
         if (more < 0)
             return 0;
     }
     /* k^2 W with 30 fraction bits: k^2 w - k (k qy). */
-    kq = div_frac((int64_t)o->r * q[1], o->h, &kq_lo);
+    kq = div_frac((int64_t)up->radius * q[1], up->height, &kq_lo);
     int64_t lo;
     n[0] = (int64_t)v[0] * (1 << 14) + q[0];
     n[1] = kkw * (1 << 14) + shr_round(kkw_lo, FINE_K_BITS - 14) +
-           shr_round(div_frac((int64_t)o->r * e, o->h, &lo), 10) -
-           div_frac((int64_t)o->r * kq, o->h, &lo);
+           shr_round(div_frac((int64_t)up->radius * e, up->height, &lo), 10) -
+           div_frac((int64_t)up->radius * kq, up->height, &lo);
     n[2] = (int64_t)v[2] * (1 << 14) + q[2];
     return 1;
 }
@@ -247,6 +250,7 @@ static fx_vec3 moved(fx_vec3 p, const int32_t q[3])
 RT_NOINLINE static fx_dir3 fine_normal(const rt_object *o, const rt_ray *r,
                                        fx_t t, fx_vec3 *pp)
 {
+    const rt_upright *up = &o->u.upright;
     const fx_vec3 p = *pp;
     int32_t q[3];
     int64_t moved_t = 0;
@@ -257,21 +261,23 @@ RT_NOINLINE static fx_dir3 fine_normal(const rt_object *o, const rt_ray *r,
         *pp = moved(p, q);
         return fx_d3_normalize64(n[0], n[1], n[2]);
     }
-    if (!side_step(r, t, p, o->a, o->r, q, &moved_t))
+    if (!side_step(r, t, p, up->base, up->radius, q, &moved_t))
         return fx_d3(0, 0, 0);
     *pp = moved(p, q);
     /* |p - a| across the axis is below 2^30 here (side_step). */
-    return fx_d3_normalize64(((int64_t)p.x - o->a.x) * (1 << 14) + q[0], 0,
-                             ((int64_t)p.z - o->a.z) * (1 << 14) + q[2]);
+    return fx_d3_normalize64(((int64_t)p.x - up->base.x) * (1 << 14) + q[0], 0,
+                             ((int64_t)p.z - up->base.z) * (1 << 14) + q[2]);
 }
 
 int rt_side_root(const rt_object *o, const rt_ray *r, fx_t t, int64_t *t30)
 {
+    const rt_upright *up = &o->u.upright;
     const fx_vec3 p = fx_v3_madd_d(r->o, r->d, t);
     int32_t q[3];
     int64_t n[3], moved_t = 0;
     if (!(o->kind == RT_CONE ? cone_step(r, t, p, o, q, n, &moved_t)
-                             : side_step(r, t, p, o->a, o->r, q, &moved_t)))
+                             : side_step(r, t, p, up->base, up->radius, q,
+                                         &moved_t)))
         return 0;
     *t30 = (int64_t)t * (1 << 14) + moved_t;
     return 1;
@@ -280,6 +286,7 @@ int rt_side_root(const rt_object *o, const rt_ray *r, fx_t t, int64_t *t30)
 fx_dir3 rt_upright_normal(const rt_object *o, const rt_ray *r, fx_t t,
                           fx_vec3 *pp, unsigned part, int precise)
 {
+    const rt_upright *up = &o->u.upright;
     if (part == 1)
         return fx_d3(0, -FX_UONE, 0);
     if (part == 2)
@@ -290,15 +297,15 @@ fx_dir3 rt_upright_normal(const rt_object *o, const rt_ray *r, fx_t t,
             return n;
     }
     const fx_vec3 p = *pp;
-    fx_t x = fx_sub(p.x, o->a.x), z = fx_sub(p.z, o->a.z);
+    fx_t x = fx_sub(p.x, up->base.x), z = fx_sub(p.z, up->base.z);
     if (o->kind == RT_CONE) {
         fx_t rho = (fx_t)fx_sqrt_q32((uint64_t)(fx_imul64(x, x)) +
                                      (uint64_t)(fx_imul64(z, z)));
         if (rho == 0)
             return fx_d3(0, FX_UONE, 0); /* apex */
-        /* y = k rho, o->k with RT_FRAME_BITS fraction bits. */
+        /* y = k rho, the slope with RT_FRAME_BITS fraction bits. */
         return fx_d3_normalize64(
-            x, shr_round(fx_imul64(o->k, rho), RT_FRAME_BITS), z);
+            x, shr_round(fx_imul64(up->slope, rho), RT_FRAME_BITS), z);
     }
     return fx_d3_normalize(fx_v3(x, 0, z));
 }

@@ -97,16 +97,16 @@ RT_NOINLINE static uint32_t cell_edge(const rt_material *m,
     int64_t w;
     unsigned j = 3; /* the axis of the face's plane, if any */
     fx_t plane = 0;
-    if (o->kind == RT_QUAD && o->flat &&
-        (o->n.y == FX_UONE || o->n.y == -FX_UONE)) {
+    if (o->kind == RT_QUAD && o->u.quad.flat &&
+        (o->u.quad.normal.y == FX_UONE || o->u.quad.normal.y == -FX_UONE)) {
         j = 1;
-        plane = o->a.y;
+        plane = o->u.quad.corner.y;
     } else if (o->kind == RT_BOX) {
         for (unsigned a = 0; a < 3; a++)
             if (dcomp(h->n_out, a) != 0) {
                 j = a;
-                plane = dcomp(h->n_out, a) > 0 ? comp(o->b, a)
-                                                : comp(o->a, a);
+                plane = dcomp(h->n_out, a) > 0 ? comp(o->u.box.max, a)
+                                                : comp(o->u.box.min, a);
             }
     }
     /* A reflective or transparent upright's p is its hit refined
@@ -170,22 +170,22 @@ static inline uint32_t cell_any(const rt_material *m, const tex_hit *h,
 }
 
 /* rt_texel where some difference overflows int32 (points over 32,768
- * units from o->a). */
+ * units from the object's origin). */
 static unsigned texel_far(const rt_material *m, const tex_hit *h,
                           const rt_object *o, const fx_vec3 *p)
 {
-    uint32_t idx = cell_any(m, h, o, 0, p->x, o->a.x) +
-                   cell_any(m, h, o, 2, p->z, o->a.z);
+    uint32_t idx = cell_any(m, h, o, 0, p->x, o->u.origin.x) +
+                   cell_any(m, h, o, 2, p->z, o->u.origin.z);
     if (m->texture == RT_TEX_STRIPES)
         idx = cell_any(m, h, o, m->axis, comp(*p, m->axis),
-                       comp(o->a, m->axis));
+                       comp(o->u.origin, m->axis));
     else if (m->texture == RT_TEX_CHECKER3D)
-        idx += cell_any(m, h, o, 1, p->y, o->a.y);
+        idx += cell_any(m, h, o, 1, p->y, o->u.origin.y);
     return idx & 1u;
 }
 
 /* Textures follow the object, not the world origin: cells count from the
- * object's first point o->a. The unsigned sums wrap by definition and
+ * object's first point o->u.origin. The unsigned sums wrap by definition and
  * keep the parity. */
 unsigned rt_texel(const rt_material *m, const rt_object *o, const rt_ray *r,
                   fx_t t, fx_dir3 n_out, fx_vec3 p)
@@ -195,30 +195,30 @@ unsigned rt_texel(const rt_material *m, const rt_object *o, const rt_ray *r,
     switch (m->texture) {
     case RT_TEX_STRIPES:
         if (m->axis == 0) {
-            if (far_apart(p.x, o->a.x))
+            if (far_apart(p.x, o->u.origin.x))
                 return texel_far(m, &h, o, &p);
-            idx = cell(m, &h, o, 0, p.x, o->a.x);
+            idx = cell(m, &h, o, 0, p.x, o->u.origin.x);
         } else if (m->axis == 1) {
-            if (far_apart(p.y, o->a.y))
+            if (far_apart(p.y, o->u.origin.y))
                 return texel_far(m, &h, o, &p);
-            idx = cell(m, &h, o, 1, p.y, o->a.y);
+            idx = cell(m, &h, o, 1, p.y, o->u.origin.y);
         } else {
-            if (far_apart(p.z, o->a.z))
+            if (far_apart(p.z, o->u.origin.z))
                 return texel_far(m, &h, o, &p);
-            idx = cell(m, &h, o, 2, p.z, o->a.z);
+            idx = cell(m, &h, o, 2, p.z, o->u.origin.z);
         }
         break;
     case RT_TEX_CHECKER:
-        if ((far_bit(p.x, o->a.x) | far_bit(p.z, o->a.z)) >> 31)
+        if ((far_bit(p.x, o->u.origin.x) | far_bit(p.z, o->u.origin.z)) >> 31)
             return texel_far(m, &h, o, &p);
-        idx = cell(m, &h, o, 0, p.x, o->a.x) + cell(m, &h, o, 2, p.z, o->a.z);
+        idx = cell(m, &h, o, 0, p.x, o->u.origin.x) + cell(m, &h, o, 2, p.z, o->u.origin.z);
         break;
     case RT_TEX_CHECKER3D:
-        if ((far_bit(p.x, o->a.x) | far_bit(p.y, o->a.y) |
-             far_bit(p.z, o->a.z)) >> 31)
+        if ((far_bit(p.x, o->u.origin.x) | far_bit(p.y, o->u.origin.y) |
+             far_bit(p.z, o->u.origin.z)) >> 31)
             return texel_far(m, &h, o, &p);
-        idx = cell(m, &h, o, 0, p.x, o->a.x) + cell(m, &h, o, 1, p.y, o->a.y) +
-              cell(m, &h, o, 2, p.z, o->a.z);
+        idx = cell(m, &h, o, 0, p.x, o->u.origin.x) + cell(m, &h, o, 1, p.y, o->u.origin.y) +
+              cell(m, &h, o, 2, p.z, o->u.origin.z);
         break;
     default:
         return 0;
@@ -365,9 +365,9 @@ fx_dir3 rt_bump(const rt_material *m, const rt_object *o, fx_vec3 p,
 {
     uint32_t i[3];
     int32_t s[3];
-    lattice_axis(m, p.x, o->a.x, &i[0], &s[0]);
-    lattice_axis(m, p.y, o->a.y, &i[1], &s[1]);
-    lattice_axis(m, p.z, o->a.z, &i[2], &s[2]);
+    lattice_axis(m, p.x, o->u.origin.x, &i[0], &s[0]);
+    lattice_axis(m, p.y, o->u.origin.y, &i[1], &s[1]);
+    lattice_axis(m, p.z, o->u.origin.z, &i[2], &s[2]);
     /* norm(n + bump g), with FX_UBITS fraction bits: g bump has
      * 16 + NOISE_BITS (|g| <= 1, |bump| < 2^31: below 2^61). */
     int32_t g[3];

@@ -53,15 +53,22 @@ rt_status build_scene(rt_scene *s)
         (st = rt_material_prepare(ground)) != RT_OK)
         return st;
 
-    quad->kind = RT_QUAD;
-    quad->material = 1;
-    quad->a = fx_v3(FX_CONST(-5), 0, FX_CONST(-5)); /* corner */
-    quad->b = fx_v3(0, 0, FX_CONST(10));            /* edge1 */
-    quad->c = fx_v3(FX_CONST(10), 0, 0);            /* edge2 */
-    ball->kind = RT_SPHERE;
-    ball->material = 0;
-    ball->a = fx_v3(0, FX_CONST(1), 0); /* centre */
-    ball->r = FX_CONST(1);
+    /* An object is its kind, its material and its kind's record in u
+     * (rt_scene.h): u.sphere, u.quad, u.box, u.upright (cylinders and
+     * cones) or u.mesh. */
+    *quad = (rt_object){
+        .kind = RT_QUAD,
+        .material = 1,
+        .u.quad = { .corner = { FX_CONST(-5), 0, FX_CONST(-5) },
+                    .edge1 = { 0, 0, FX_CONST(10) },
+                    .edge2 = { FX_CONST(10), 0, 0 } },
+    };
+    *ball = (rt_object){
+        .kind = RT_SPHERE,
+        .material = 0,
+        .u.sphere = { .center = { 0, FX_CONST(1), 0 },
+                      .radius = FX_CONST(1) },
+    };
     s->n_objects = 2;
     if ((st = rt_object_prepare(quad)) != RT_OK ||
         (st = rt_object_prepare(ball)) != RT_OK)

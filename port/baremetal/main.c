@@ -16,14 +16,22 @@
  * The figures go to the text channel as lines "name value":
  *
  *   instructions N   retired guest instructions from just before the first
- *                    row to just after the last (rendering and output)
+ *                    row to just after the last (rendering and output);
+ *                    on a two-core board, both cores' together (the
+ *                    virtual clock counts both; tools/dual_table.sh
+ *                    counts each core)
  *   pixels N         width * height
  *   stack_bytes N    stack high-water mark of the whole run
  *   stack_reserved N stack size reserved by the linker script
  *
+ * On a two-core board (FW_CORES=2) both cores render (dual.c), and
+ * core 1's rows and stack follow: core1_rows, stack_bytes_core1,
+ * stack_reserved_core1.
+ *
  * Errors print "fixtrace: ..." on the text channel and exit with a code
  * from port.h (2 parse, 3 options, 4 render, including a scene that needs
- * an effect this build removed (docs/effects.md), 5 stack).
+ * an effect this build removed (docs/effects.md), 5 stack, 6 the second
+ * core never started).
  *
  * The build generates fw_config.h with FW_SCENE_TABLES, FW_WIDTH,
  * FW_HEIGHT and FW_SPP (0 means "the scene's default"), FW_ADAPTIVE
@@ -31,8 +39,8 @@
  * (0, or the draft threshold of rt_options).
  */
 #include "port.h"
-#include "fw_config.h"
-#include "rt_render.h"
+#include "fw_buffers.h"
+#include "dual.h"
 
 #ifndef FW_SCENE_TABLES
 #define FW_SCENE_TABLES 0
@@ -55,26 +63,6 @@ static rt_scene scene;
 /* A stack that came this close to its reserved bottom may have overflowed
  * (a frame can skip over a few painted words). */
 #define STACK_GUARD 64u
-
-/* Widest row the firmware can send; boards short of RAM set it lower than
- * RT_MAX_WIDTH (mk/firmware.mk). */
-#ifndef FW_ROW_PIXELS
-#define FW_ROW_PIXELS RT_MAX_WIDTH
-#endif
-
-#ifndef FW_DRAFT
-#define FW_DRAFT 0
-#endif
-
-/* The row buffer (rt_buffer_bytes()): the RGB888 row, plus three rows of
- * centre samples for adaptive anti-aliasing, plus the rows of a draft
- * render's levels, a row and its flags (below 25 bytes a pixel and 128
- * bytes) for the width asked for, or the widest row. */
-#define FW_BUF_PIXELS                                                         \
-    (FW_WIDTH > 0 && FW_WIDTH < FW_ROW_PIXELS ? FW_WIDTH : FW_ROW_PIXELS)
-#define FW_BUF_BYTES                                                          \
-    (FW_ROW_PIXELS * (FW_ADAPTIVE > 0 ? 12 : 3) +                             \
-     (FW_DRAFT > 0 ? FW_BUF_PIXELS * 25 + 128 : 0))
 
 /* In .bss, so `make size` accounts for it. */
 static uint8_t row_buf[FW_BUF_BYTES];
@@ -184,8 +172,15 @@ int main(void)
     port_image_begin(opt.width, opt.height, opt.format,
                      (uint32_t)(rt_row_bytes(&opt) * opt.height));
     uint64_t t0 = port_cycles();
-    st = rt_render_rows(s, &opt, 0, opt.height, row_buf, send_row, 0,
-                        0);
+    if (FW_CORES > 1) {
+        int dst = dual_render(s, &opt, row_buf, send_row, 0);
+        if (dst == DUAL_NO_CORE1)
+            return PORT_EXIT_CORE1;
+        st = (rt_status)dst;
+    } else {
+        st = rt_render_rows(s, &opt, 0, opt.height, row_buf, send_row, 0,
+                            0);
+    }
     uint64_t t1 = port_cycles();
     if (st != RT_OK) {
         log_status("rt_render_rows", st);
@@ -198,6 +193,8 @@ int main(void)
     port_log_value("pixels", (uint64_t)opt.width * opt.height);
     port_log_value("stack_bytes", used);
     port_log_value("stack_reserved", port_stack_size());
+    if (FW_CORES > 1 && dual_report(STACK_GUARD) != 0)
+        return PORT_EXIT_STACK;
     if (used + STACK_GUARD > port_stack_size()) {
         port_log("fixtrace: stack overflow (raise STACK_SIZE in the "
                  "linker script)\n");

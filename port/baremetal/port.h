@@ -21,6 +21,7 @@ enum {
     PORT_EXIT_OPTIONS = 3,   /* size or spp outside this build's limits */
     PORT_EXIT_RENDER = 4,    /* rt_render_rows() returned an error */
     PORT_EXIT_STACK = 5,     /* the stack came within 64 bytes of its end */
+    PORT_EXIT_CORE1 = 6,     /* the second core gave no sign of life */
     PORT_EXIT_HARDFAULT = 101, /* HardFault (every fault on Cortex-M0) */
     PORT_EXIT_MEMFAULT = 102,  /* MemManage */
     PORT_EXIT_BUSFAULT = 103,  /* BusFault */
@@ -89,6 +90,25 @@ void port_display_row(int y, const uint8_t *rgb, unsigned width);
  * the text channel and keeps the picture up until the host has taken it
  * (the board may never return). */
 void port_display_done(void);
+
+/* ---- A second core (boards built with -DFW_CORES=2 only) -------------- */
+
+/* 2 on a board with two cores (FW_CAPS in mk/boards/<board>.mk): main.c
+ * then renders with both (dual.c), and the board defines
+ * port_core1_start(). */
+#ifndef FW_CORES
+#define FW_CORES 1
+#endif
+
+/* Releases the second core, which then runs port_core1_main() on its own
+ * stack, [_sstack1, _estack1) of the board's linker script, with the
+ * stack limit set where the core has one. Returns at once: the caller
+ * (dual.c) waits for the core's first sign of life, for a bounded number
+ * of polls. If port_core1_main() returns, the core stays parked. */
+void port_core1_start(void);
+
+/* What the second core runs (dual.c). */
+void port_core1_main(void);
 
 /* The board's UART, for OUTPUT=uart (out_uart.c): port_uart_init() sets
  * it up for sending (port_output_init() calls it), port_uart_putc() sends

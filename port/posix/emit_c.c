@@ -133,31 +133,82 @@ static void put_material(emitter *e, const rt_material *m)
     put_uint(e, "bump_rcp", m->bump_rcp);
 }
 
-static void put_object(emitter *e, const rt_object *o)
+/* Opens the member `.u.name = {` of an object's initialiser. */
+static void open_record(emitter *e, const char *name)
+{
+    put(e, ".u.%s = {", name);
+    e->indent++;
+}
+
+static void close_record(emitter *e)
+{
+    e->indent--;
+    put(e, "},");
+}
+
+/* Object i: the record of its kind only (the union's other members
+ * overlay it). */
+static void put_object(emitter *e, const rt_object *o, unsigned i)
 {
     put_enum(e, "kind", o->kind, kind_name, RT_KIND_COUNT);
     put_uint(e, "material", o->material);
     put_uint(e, "caps", o->caps);
     put_uint(e, "convex", o->convex);
     put_uint(e, "small", o->small);
-    put_uint(e, "flat", o->flat);
-    put_vec(e, "a", o->a);
-    put_vec(e, "b", o->b);
-    put_vec(e, "c", o->c);
-    put_fx(e, "r", o->r);
-    put_fx(e, "h", o->h);
+    switch (o->kind) {
+    case RT_SPHERE:
+        open_record(e, "sphere");
+        put_vec(e, "center", o->u.sphere.center);
+        put_fx(e, "radius", o->u.sphere.radius);
+        put(e, "/* Derived by rt_object_prepare(). */");
+        put_uint(e, "inv_radius", o->u.sphere.inv_radius);
+        break;
+    case RT_QUAD: {
+        const rt_quad *q = &o->u.quad;
+        open_record(e, "quad");
+        put_vec(e, "corner", q->corner);
+        put_vec(e, "edge1", q->edge1);
+        put_vec(e, "edge2", q->edge2);
+        put(e, "/* Derived by rt_object_prepare(). */");
+        put_uint(e, "flat", q->flat);
+        /* FX_UBITS fraction bits */
+        put_vec(e, "normal", fx_d3_raw(q->normal));
+        put_vec(e, "axis_u", fx_d3_raw(q->axis_u));
+        put_vec(e, "axis_v", fx_d3_raw(q->axis_v));
+        put_fx(e, "len_u", q->len_u);
+        put_fx(e, "len_v", q->len_v);
+        put_fx(e, "dist", q->dist);
+        break;
+    }
+    case RT_BOX:
+        open_record(e, "box");
+        put_vec(e, "min", o->u.box.min);
+        put_vec(e, "max", o->u.box.max);
+        break;
+    case RT_CYLINDER:
+    case RT_CONE: {
+        const rt_upright *up = &o->u.upright;
+        open_record(e, "upright");
+        put_vec(e, "base", up->base);
+        put_fx(e, "radius", up->radius);
+        put_fx(e, "height", up->height);
+        put(e, "/* Derived by rt_object_prepare(). */");
+        put(e, ".frame_shift = %d,", up->frame_shift);
+        put_fx(e, "slope", up->slope);
+        put_uint(e, "thin", up->thin);
+        break;
+    }
+    default: /* RT_MESH */
+        open_record(e, "mesh");
+        put_vec(e, "origin", o->u.mesh.origin);
+        if (o->u.mesh.tables)
+            put(e, ".tables = &fw_mesh%u,", i);
+        break;
+    }
+    close_record(e);
     put(e, "/* Derived by rt_object_prepare(). */");
-    put_vec(e, "n", fx_d3_raw(o->n)); /* FX_UBITS fraction bits */
-    put_vec(e, "pu", fx_d3_raw(o->pu));
-    put_vec(e, "pv", fx_d3_raw(o->pv));
-    put_fx(e, "lu", o->lu);
-    put_fx(e, "lv", o->lv);
-    put_fx(e, "dist", o->dist);
     put_vec(e, "bc", o->bc);
     put_fx(e, "br", o->br);
-    put(e, ".ushift = %d,", o->ushift);
-    put_uint(e, "rinv", o->rinv);
-    put_fx(e, "k", o->k);
 }
 
 /* The tables of mesh object i, as constants named fw_mesh<i>_*, and the
@@ -230,9 +281,7 @@ static void put_light_i(emitter *e, const rt_scene *s, unsigned i)
 
 static void put_obj_i(emitter *e, const rt_scene *s, unsigned i)
 {
-    put_object(e, &s->obj[i]);
-    if (s->obj[i].mesh)
-        put(e, ".mesh = &fw_mesh%u,", i);
+    put_object(e, &s->obj[i], i);
 }
 
 /* The used entries of an array member; none at all when it is empty
@@ -318,8 +367,8 @@ int emit_c_scene(FILE *f, const rt_scene *s, const char *source)
     put_settings_guard(f);
     fputc('\n', f);
     for (unsigned i = 0; i < n_obj; i++)
-        if (s->obj[i].kind == RT_MESH && s->obj[i].mesh)
-            put_mesh(&e, s->obj[i].mesh, i);
+        if (s->obj[i].kind == RT_MESH && s->obj[i].u.mesh.tables)
+            put_mesh(&e, s->obj[i].u.mesh.tables, i);
     put(&e, "const rt_scene fw_scene = {");
     e.indent++;
     put(&e, ".cam = {");

@@ -33,7 +33,8 @@ typedef struct {
     unsigned caps; /* RT_CAP_* (a cone keeps only RT_CAP_BOTTOM) */
     int convex;    /* a ray leaving its outside cannot meet it again */
     ref_vec3 a;    /* sphere: centre; quad: corner; box: min; cylinder,
-                      cone: base centre */
+                      cone: base centre; mesh: its texture's origin (the
+                      first point of each, rt_object.u.origin) */
     ref_vec3 b;    /* quad: edge1; box: max */
     ref_vec3 c;    /* quad: edge2 */
     double r, h;   /* radius, height */

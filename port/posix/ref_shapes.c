@@ -17,17 +17,32 @@ void ref_shape_from_object(const rt_object *obj, ref_shape *sh)
     memset(sh, 0, sizeof *sh);
     sh->kind = obj->kind;
     sh->caps = obj->caps & both;
-    sh->a = fxv(obj->a);
-    sh->b = fxv(obj->b);
-    sh->c = fxv(obj->c);
-    sh->r = fxd(obj->r);
-    sh->h = fxd(obj->h);
+    sh->a = fxv(obj->u.origin); /* every kind's first point */
+    switch (sh->kind) {
+    case RT_SPHERE:
+        sh->r = fxd(obj->u.sphere.radius);
+        break;
+    case RT_QUAD:
+        sh->b = fxv(obj->u.quad.edge1);
+        sh->c = fxv(obj->u.quad.edge2);
+        break;
+    case RT_BOX:
+        sh->b = fxv(obj->u.box.max);
+        break;
+    case RT_CYLINDER:
+    case RT_CONE:
+        sh->r = fxd(obj->u.upright.radius);
+        sh->h = fxd(obj->u.upright.height);
+        break;
+    default: /* RT_MESH */
+        sh->mesh = obj->u.mesh.tables;
+        break;
+    }
     if (sh->kind == RT_CONE)
         sh->caps &= RT_CAP_BOTTOM; /* a cone has no top cap */
     /* Every shape bounds a convex solid (an open cylinder or cone too):
      * a ray leaving its outside cannot meet it again. A mesh need not. */
     sh->convex = sh->kind != RT_MESH;
-    sh->mesh = obj->mesh;
 }
 
 /* Keeps t if it is a nearer acceptable hit than *best. */

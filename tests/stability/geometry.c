@@ -80,7 +80,7 @@ void case_grazing_quad_dn_1ulp(void)
 void case_plane_parallel_few_ulps(void)
 {
     rt_object q = quad(V(-50, -40, -30), V(100, 0, 0), V(0, -80, 60));
-    fx_dir3 n = q.n;
+    fx_dir3 n = q.u.quad.normal;
     /* A direction in the plane: n x (1, 0, 0), then tilted by k ulps of
      * Q16.16 (the PAR threshold is 2^-16). */
     fx_dir3 in = fx_d3_cross_unit(fx_d3_raw(n), fx_v3(FX_ONE, 0, 0));
@@ -259,7 +259,7 @@ void case_origin_on_cylinder_rim(void)
 void case_tiny_sphere_3ulp(void)
 {
     rt_object s = obj(RT_SPHERE, 0, 0, 1);
-    s.r = 3;
+    s.u.sphere.radius = 3;
     CHECK_EQ(rt_object_prepare(&s), RT_OK);
     rt_ray r = ray_raw(fx_v3(0, 0, 0), fx_v3(0, 0, FX_ONE));
     double t;
@@ -282,7 +282,8 @@ void case_tiny_sphere_3ulp(void)
 void case_tiny_upright_4ulp(void)
 {
     rt_object c = obj(RT_CYLINDER, 0, 0, 0), k = obj(RT_CONE, 0, 0, 0);
-    c.r = c.h = k.r = k.h = 4;
+    c.u.upright.radius = c.u.upright.height = 4;
+    k.u.upright.radius = k.u.upright.height = 4;
     CHECK_EQ(rt_object_prepare(&c), RT_OK);
     CHECK_EQ(rt_object_prepare(&k), RT_OK);
     rt_ray down = ray_raw(fx_v3(0, FX_ONE, 0), fx_v3(0, -FX_ONE, 0));
@@ -315,15 +316,15 @@ void case_tiny_upright_4ulp(void)
 void case_tiny_quad_box_1ulp(void)
 {
     rt_object q = quad(fx_v3(0, 0, FX_ONE), fx_v3(1, 0, 0), fx_v3(0, 1, 0));
-    CHECK(nerr(q.n, 0, 0, 1) < 1e-4);
+    CHECK(nerr(q.u.quad.normal, 0, 0, 1) < 1e-4);
     rt_ray corner = ray_raw(fx_v3(1, 1, 0), fx_v3(0, 0, FX_ONE));
     rt_ray past = ray_raw(fx_v3(4, 1, 0), fx_v3(0, 0, FX_ONE));
     HIT_AT(q, corner, 1, 1.0 / 65536);
     MISS(q, past);
     past = ray_raw(fx_v3(2, 1, 0), fx_v3(0, 0, FX_ONE));
     rt_object b = obj(RT_BOX, 0, 0, 0);
-    b.a = fx_v3(0, 0, FX_ONE);
-    b.b = fx_v3(1, 1, FX_ONE + 1);
+    b.u.box.min = fx_v3(0, 0, FX_ONE);
+    b.u.box.max = fx_v3(1, 1, FX_ONE + 1);
     CHECK_EQ(rt_object_prepare(&b), RT_OK);
     HIT_AT(b, corner, 1, 1.0 / 65536);
     MISS(b, past);
@@ -349,8 +350,8 @@ void case_huge_coords_saturate(void)
     rt_ray r2 = ray_raw(V(29990, 30000, 30000), V(1, 0, 0));
     HIT_AT(s, r2, 9, 0);
     rt_object all = obj(RT_BOX, 0, 0, 0);
-    all.a = fx_v3(FX_MIN, FX_MIN, FX_MIN);
-    all.b = fx_v3(FX_MAX, FX_MAX, FX_MAX);
+    all.u.box.min = fx_v3(FX_MIN, FX_MIN, FX_MIN);
+    all.u.box.max = fx_v3(FX_MAX, FX_MAX, FX_MAX);
     CHECK_EQ(rt_object_prepare(&all), RT_OK);
     rt_ray in = ray_raw(V(1, 0, 0), V(1, 0, 0));
     HIT_AT(all, in, F2D(FX_MAX) - 1, 1.0 / 65536);
@@ -550,7 +551,7 @@ static int seam_cracks(const rt_object *q1, const rt_object *q2,
         rt_ray r = ray(px - dist * dx / l, py - dist * dy / l,
                        pz - dist * dz / l, dx, dy, dz);
         double t;
-        if (fabs(F2D(fx_d3_dot(r.d, q1->n))) < 0.05)
+        if (fabs(F2D(fx_d3_dot(r.d, q1->u.quad.normal))) < 0.05)
             continue; /* too grazing for the plane to matter */
         (*n)++;
         if (cast(q1, &r, &t, NULL) || cast(q2, &r, &t, NULL))

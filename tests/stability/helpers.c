@@ -322,7 +322,7 @@ rt_object obj(int kind, double ax, double ay, double az)
     rt_object o;
     memset(&o, 0, sizeof o);
     o.kind = (uint8_t)kind;
-    o.a = fx_v3(D2F(ax), D2F(ay), D2F(az));
+    o.u.origin = fx_v3(D2F(ax), D2F(ay), D2F(az)); /* any kind's first */
     o.caps = RT_CAP_BOTTOM | RT_CAP_TOP;
     return o;
 }
@@ -330,7 +330,7 @@ rt_object obj(int kind, double ax, double ay, double az)
 rt_object sphere(double cx, double cy, double cz, double r)
 {
     rt_object o = obj(RT_SPHERE, cx, cy, cz);
-    o.r = D2F(r);
+    o.u.sphere.radius = D2F(r);
     CHECK_EQ(rt_object_prepare(&o), RT_OK);
     return o;
 }
@@ -339,8 +339,8 @@ rt_object upright(int kind, double ax, double ay, double az, double r,
                          double h)
 {
     rt_object o = obj(kind, ax, ay, az);
-    o.r = D2F(r);
-    o.h = D2F(h);
+    o.u.upright.radius = D2F(r);
+    o.u.upright.height = D2F(h);
     CHECK_EQ(rt_object_prepare(&o), RT_OK);
     return o;
 }
@@ -349,7 +349,7 @@ rt_object box(double x0, double y0, double z0, double x1, double y1,
                      double z1)
 {
     rt_object o = obj(RT_BOX, x0, y0, z0);
-    o.b = fx_v3(D2F(x1), D2F(y1), D2F(z1));
+    o.u.box.max = fx_v3(D2F(x1), D2F(y1), D2F(z1));
     CHECK_EQ(rt_object_prepare(&o), RT_OK);
     return o;
 }
@@ -359,9 +359,9 @@ rt_object quad(fx_vec3 a, fx_vec3 e1, fx_vec3 e2)
     rt_object o;
     memset(&o, 0, sizeof o);
     o.kind = RT_QUAD;
-    o.a = a;
-    o.b = e1;
-    o.c = e2;
+    o.u.quad.corner = a;
+    o.u.quad.edge1 = e1;
+    o.u.quad.edge2 = e2;
     CHECK_EQ(rt_object_prepare(&o), RT_OK);
     return o;
 }

@@ -129,8 +129,10 @@ void case_apex_light_along_generator(void)
                 rt_object c = upright(RT_CONE, 3.25, -1.5, 0.75, rad, h);
                 if (open)
                     c.caps = 0;
-                const fx_vec3 apex = fx_v3(c.a.x, c.a.y + c.h, c.a.z);
-                const double alpha = atan(F2D(c.r) / F2D(c.h));
+                const rt_upright *up = &c.u.upright;
+                const fx_vec3 apex =
+                    fx_v3(up->base.x, up->base.y + up->height, up->base.z);
+                const double alpha = atan(F2D(up->radius) / F2D(up->height));
                 for (int di = 0; di < 4; di++)
                     for (int si = 0; si < 4; si++)
                         for (int az = 0; az < 4; az++) {
@@ -188,11 +190,13 @@ void case_light_on_flat_cone_rim(void)
             const double rad = 91.60635273, h = rad / slopes[ki];
             rt_object c = upright(RT_CONE, xs[xi], 16.39201709, 25.36923067,
                                   rad, h);
-            const double ax = F2D(c.a.x), ay = F2D(c.a.y), az = F2D(c.a.z);
-            const double R = F2D(c.r), H = F2D(c.h);
+            const rt_upright *up = &c.u.upright;
+            const double ax = F2D(up->base.x), ay = F2D(up->base.y),
+                         az = F2D(up->base.z);
+            const double R = F2D(up->radius), H = F2D(up->height);
             for (int li = 0; li < 4; li++) {
                 const double pl = 0.3 + li * 1.57;
-                const fx_vec3 light = fx_v3(D2F(ax + R * cos(pl)), c.a.y,
+                const fx_vec3 light = fx_v3(D2F(ax + R * cos(pl)), up->base.y,
                                             D2F(az + R * sin(pl)));
                 for (int k = 0; k < 48; k++) {
                     /* A point on the side, 0.3 to 0.95 of the way out,

@@ -198,15 +198,15 @@ void case_bump_normal_precision(void)
             const rt_object *o = &scene_a.obj[0];
             for (int k = 0; k < 2000; k++) {
                 const fx_vec3 p = fx_v3(
-                    o->a.x + (fx_t)(th_rnd64(&st) % 400000) - 200000,
-                    o->a.y + (fx_t)(th_rnd64(&st) % 400000) - 200000,
-                    o->a.z + (fx_t)(th_rnd64(&st) % 400000) - 200000);
+                    o->u.origin.x + (fx_t)(th_rnd64(&st) % 400000) - 200000,
+                    o->u.origin.y + (fx_t)(th_rnd64(&st) % 400000) - 200000,
+                    o->u.origin.z + (fx_t)(th_rnd64(&st) % 400000) - 200000);
                 const fx_dir3 n = fx_d3(0, FX_UONE, 0);
                 const fx_dir3 c = rt_bump(m, o, p, n);
                 const double z = F2D(m->bump_scale), amp = F2D(m->bump);
-                const ref_vec3 u = { F2D(p.x - o->a.x) / z,
-                                     F2D(p.y - o->a.y) / z,
-                                     F2D(p.z - o->a.z) / z };
+                const ref_vec3 u = { F2D(p.x - o->u.origin.x) / z,
+                                     F2D(p.y - o->u.origin.y) / z,
+                                     F2D(p.z - o->u.origin.z) / z };
                 double b[3];
                 for (int j = 0; j < 3; j++)
                     b[j] = amp * ref_noise((uint32_t)j + 1, u);
