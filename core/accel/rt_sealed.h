@@ -1,36 +1,45 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * rt_sealed: closed glass that nothing else reaches into (an
- * optimisation; RT_SEALED in rt_config.h). A ray inside such an object
- * can hit only it, and when every light lies outside it and shadows are
- * on, no light reaches its inside. The stubs at the end answer "no" to
- * both, and the tracer then tests every object and every light.
+ * rt_sealed: closed glass whose inside reaches at most one other object
+ * (an optimisation; RT_SEALED in rt_config.h). A ray inside such an
+ * object can hit only it and that one, decided from the shapes' own
+ * geometry (rt_sealed.c); and when every light lies outside it and
+ * shadows are on, no light reaches its inside. The stubs at the end
+ * answer "no" to both, and the tracer then tests every object and every
+ * light.
  */
 #ifndef RT_SEALED_H
 #define RT_SEALED_H
 
 #include "rt_scene.h"
 
+/* An object index meaning "not sealed" (rt_ray.h's RT_NO_OBJECT). */
+#define RT_SEALED_NONE 0xFFFFu
+
 #if RT_SEALED
 
-/* Bit sets over objects. alone: closed convex (a sphere, a box, a capped
- * cylinder or cone) whose bounding sphere no other object's meets, so a
- * ray inside it can hit only it. dark: closed convex with every light
- * outside its bounding sphere and shadows on, so no light reaches its
- * inside. Only transparent objects are listed: inside rays come only
- * from refraction. */
+/* with[i]: for closed convex glass (a sphere, a box, a capped cylinder
+ * or cone) the one object other than i whose shape comes near i's
+ * inside, or i itself when none does; RT_SEALED_NONE when two or more
+ * do, or i is not closed glass. Only transparent objects are listed:
+ * inside rays come only from refraction. dark: closed convex with every
+ * light outside its bounding sphere and shadows on, so no light reaches
+ * its inside. */
 typedef struct {
-    uint32_t alone[(RT_MAX_OBJECTS + 31) / 32];
+    uint16_t with[RT_MAX_OBJECTS];
     uint32_t dark[(RT_MAX_OBJECTS + 31) / 32];
 } rt_sealed;
 
 /* Fills *sl for scene s; shadows: the render casts shadows. */
 void rt_sealed_find(rt_sealed *sl, const rt_scene *s, int shadows);
 
-/* 1 if a ray inside object i can hit only i. */
-static inline int rt_sealed_alone(const rt_sealed *sl, unsigned i)
+/* What a ray inside object i can hit besides i: rt_sealed.with[i]. A
+ * ray that starts inside i and hits i before it hits that object hits
+ * nothing else first: the nearest hit among the two is the nearest of
+ * all, exact ties included, when it is i's. */
+static inline unsigned rt_sealed_with(const rt_sealed *sl, unsigned i)
 {
-    return (int)((sl->alone[i / 32] >> (i % 32)) & 1u);
+    return sl->with[i];
 }
 
 /* 1 if no light reaches the inside of object i. */
@@ -51,10 +60,10 @@ static inline void rt_sealed_find(rt_sealed *sl, const rt_scene *s,
     (void)sl, (void)s, (void)shadows;
 }
 
-static inline int rt_sealed_alone(const rt_sealed *sl, unsigned i)
+static inline unsigned rt_sealed_with(const rt_sealed *sl, unsigned i)
 {
     (void)sl, (void)i;
-    return 0;
+    return RT_SEALED_NONE;
 }
 
 static inline int rt_sealed_dark(const rt_sealed *sl, unsigned i)

@@ -114,8 +114,9 @@
 
 /* Shadow rays, and rays leaving a reflective or transparent object, test
  * only the objects listed for their direction on an N x N grid per
- * hemisphere (rt_dirgrid.c); rays inside closed glass that nothing else
- * reaches into test only it (rt_trace.h RT_SEALED). 0: every such ray
+ * hemisphere (rt_dirgrid.c); rays inside closed glass that at most one
+ * other shape reaches into test only the two (rt_sealed.h, RT_SEALED
+ * below). 0: every such ray
  * tests every object. The image is the same either way. */
 #ifndef RT_DIR_GRID
 #define RT_DIR_GRID 8

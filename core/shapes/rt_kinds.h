@@ -45,4 +45,20 @@ int rt_side_root(const rt_object *o, const rt_ray *r, fx_t t, int64_t *t30);
  * or -INT64_MAX. */
 int64_t rt_plane_t(int64_t p, fx_t o, int32_t d);
 
+/* (corner - p).normal for quad o, exact, with 16 + FX_UBITS fraction
+ * bits: negative when p lies on the side the normal points to, 0 on the
+ * plane. small: p is fx_v3_small. A flat quad's dist is normal.corner
+ * exactly; a small quad and point have corner - p within 32 bits. */
+static inline int64_t rt_quad_num(const rt_object *o, fx_vec3 p, int small)
+{
+    const rt_quad *qd = &o->u.quad;
+    if (qd->flat)
+        return (int64_t)qd->dist * FX_UONE - fx_imul64(p.y, qd->normal.y);
+    if (o->small && small)
+        return fx_imul64(qd->corner.x - p.x, qd->normal.x) +
+               fx_imul64(qd->corner.y - p.y, qd->normal.y) +
+               fx_imul64(qd->corner.z - p.z, qd->normal.z);
+    return fx_pd_dot_diff_raw(qd->corner, p, qd->normal);
+}
+
 #endif /* RT_KINDS_H */

@@ -79,15 +79,7 @@ static uint32_t quad_t(const rt_object *o, const rt_ray *r)
      * flat quad's dist = n.a is exact; a small tilted quad and ray
      * (rt_object.small) have a - o within 32 bits. den = d.n with 2
      * FX_UBITS fraction bits. */
-    int64_t num;
-    if (flat)
-        num = (int64_t)qd->dist * FX_UONE - fx_imul64(r->o.y, qd->normal.y);
-    else if (o->small && r->small)
-        num = fx_imul64(qd->corner.x - r->o.x, qd->normal.x) +
-              fx_imul64(qd->corner.y - r->o.y, qd->normal.y) +
-              fx_imul64(qd->corner.z - r->o.z, qd->normal.z);
-    else
-        num = fx_pd_dot_diff_raw(qd->corner, r->o, qd->normal);
+    const int64_t num = rt_quad_num(o, r->o, r->small);
     if ((num < 0) != (den < 0))
         return 0xFFFFFFFFu;
     /* t = num 2^FX_UBITS / den in Q16.16, both of one sign, rounded: a

@@ -97,6 +97,11 @@ int rt_intersect(const rt_object *o, const rt_ray *r, fx_t tmin, fx_t tmax,
     return 0;
 }
 
+int64_t rt_quad_side(const rt_object *o, fx_vec3 p, int small)
+{
+    return rt_quad_num(o, p, small);
+}
+
 fx_dir3 rt_normal(const rt_object *o, const rt_ray *r, fx_t t, fx_vec3 *p,
                   uint16_t part, int precise)
 {

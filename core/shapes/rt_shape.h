@@ -33,6 +33,9 @@ static inline int rt_passes_by(const rt_object *o, const rt_ray *r,
            fx_cross_beyond(oy, r->d.z, oz, r->d.y, o->br, near);
 }
 
+/* rt_quad_num out of line, for the shadow rays' culling. */
+int64_t rt_quad_side(const rt_object *o, fx_vec3 p, int small);
+
 /* Outward unit normal of o on the given part where ray r hits it at t.
  * *p is the hit point o + t d, rounded. With precise set (for a hit that
  * casts reflected or refracted rays, whose directions inherit the

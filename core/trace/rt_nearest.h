@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * rt_nearest: the nearest hit along a ray, by whichever search applies:
- * only the object itself inside sealed glass (rt_sealed.h), the
+ * the object itself and at most one other inside sealed glass
+ * (rt_sealed.h), the
  * candidates of a direction grid (rt_dirgrid.h), the camera row's spans
  * (rt_cull.h), or every object. Objects go in index order in each, so
  * exact ties resolve alike and the image does not depend on the search.
@@ -51,11 +52,26 @@ static inline int rt_nearest(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
                      (uint32_t)r->o.y + lim < 2 * lim &&
                      (uint32_t)r->o.z + lim < 2 * lim;
     /* A closed convex object skips itself exactly for rays leaving its
-     * outside, so this ray runs inside `from`. */
-    if (skip == RT_NO_OBJECT && from < s->n_objects &&
-        rt_sealed_alone(&tr->sealed, from)) {
-        rt_try_nearest(wk, s->obj, r, from, from, near, &best, obj, part);
-    } else if (grid != RT_DIR_NONE) {
+     * outside, so this ray runs inside `from`: sealed glass can hit only
+     * itself and rt_sealed_with's object, tested in index order. When
+     * `from` is not the nearest of the two, search again. */
+    const unsigned with = skip == RT_NO_OBJECT && from < s->n_objects
+                              ? rt_sealed_with(&tr->sealed, from)
+                              : RT_SEALED_NONE;
+    if (with != RT_SEALED_NONE) {
+        const unsigned last = with < from ? from : with;
+        for (unsigned i = with < from ? with : from;; i = last) {
+            rt_try_nearest(wk, s->obj, r, i, from, near, &best, obj, part);
+            if (i == last)
+                break;
+        }
+        if (best != FX_MAX && *obj == from) {
+            *t = best;
+            return 1;
+        }
+        best = FX_MAX;
+    }
+    if (grid != RT_DIR_NONE) {
         const uint32_t *cand = rt_dir_candidates(&tr->grids, grid, r->d);
         /* Loaded once, not after every store through obj, which the
          * compiler must assume may alias it. */

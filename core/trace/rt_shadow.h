@@ -42,6 +42,41 @@ static inline int rt_blocks(rt_work *wk, const rt_object *objs,
     return 1;
 }
 
+/* Word w of the candidates m of shadow ray r towards light li, less the
+ * quads it cannot cross: those whose plane has r's origin on the
+ * light's side or on it. Exact: the side is rt_quad_num's sign, which
+ * the quad's own test takes, and from there the ray meets the plane
+ * only beyond the light, past its tmax (RT_SIDE_MARGIN). */
+RT_NOINLINE static uint32_t rt_uncrossed_quads(const rt_tracer *tr,
+                                               unsigned li, unsigned w,
+                                               uint32_t m, const rt_ray *r)
+{
+    const rt_object *objs = tr->scene->obj + w * 32;
+    /* Two loops, one a side: each keeps its own test of the sign. */
+    for (uint32_t q = m & tr->quad_front[li][w]; q; q &= q - 1) {
+        const unsigned b = (unsigned)fx_ctz32(q);
+        if (rt_quad_side(&objs[b], r->o, r->small) <= 0)
+            m &= ~((uint32_t)1 << b);
+    }
+    for (uint32_t q = m & tr->quad_sided[li][w] & ~tr->quad_front[li][w]; q;
+         q &= q - 1) {
+        const unsigned b = (unsigned)fx_ctz32(q);
+        if (rt_quad_side(&objs[b], r->o, r->small) >= 0)
+            m &= ~((uint32_t)1 << b);
+    }
+    return m;
+}
+
+/* The same, out of line only when m lists such a quad: the loop stays
+ * out of the shading loop's frame. */
+static inline uint32_t rt_uncrossed(const rt_tracer *tr, unsigned li,
+                                    unsigned w, uint32_t m, const rt_ray *r)
+{
+    if (!(m & tr->quad_sided[li][w]))
+        return m;
+    return rt_uncrossed_quads(tr, li, w, m, r);
+}
+
 /* Any blocker with RT_EPS < t < tmax among the candidates (a bit set of
  * object indices, or NULL for all objects) but skip. */
 static inline int rt_occluded(const rt_tracer *tr, rt_work *wk,
@@ -55,13 +90,16 @@ static inline int rt_occluded(const rt_tracer *tr, rt_work *wk,
         rt_blocks(wk, s->obj, r, tmax, first, light))
         return 1;
     if (RT_DIR_GRIDS && cand) {
-        for (unsigned w = 0; w < tr->grids.words; w++)
-            for (uint32_t m = cand[w]; m; m &= m - 1) {
+        for (unsigned w = 0; w < tr->grids.words; w++) {
+            uint32_t m = cand[w];
+            if (skip / 32 == w)
+                m &= ~((uint32_t)1 << (skip % 32));
+            for (m = rt_uncrossed(tr, light, w, m, r); m; m &= m - 1) {
                 unsigned i = w * 32 + (unsigned)fx_ctz32(m);
-                if (i != skip && i != first &&
-                    rt_blocks(wk, s->obj, r, tmax, i, light))
+                if (i != first && rt_blocks(wk, s->obj, r, tmax, i, light))
                     return 1;
             }
+        }
         return 0;
     }
     for (unsigned i = 0; i < s->n_objects; i++)

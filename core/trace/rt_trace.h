@@ -31,7 +31,19 @@ typedef struct {
      * or 0 to trace every ray. */
     uint32_t cut_budget;
     rt_dir_grids grids; /* what shadow and secondary rays may hit */
+    /* Per light, bit sets of the quads whose plane the light lies more
+     * than RT_SIDE_MARGIN off (sided), and of those the ones it lies in
+     * front of, on the side the normal points to (front): a shadow ray
+     * from the light's side cannot cross the quad (rt_shadow.h). */
+    uint32_t quad_sided[RT_MAX_LIGHTS][(RT_MAX_OBJECTS + 31) / 32];
+    uint32_t quad_front[RT_MAX_LIGHTS][(RT_MAX_OBJECTS + 31) / 32];
 } rt_tracer;
+
+/* With 16 + FX_UBITS fraction bits: 2^(36 - FX_UBITS) ulps plus 2^-8
+ * unit. A shadow ray's direction is rounded to 2^-FX_UBITS, so its far
+ * end strays from the light, and its length is off, by under 2^(2 -
+ * FX_UBITS) of its length (below 2^33 ulps) each. */
+#define RT_SIDE_MARGIN (((int64_t)1 << 36) + ((int64_t)1 << (FX_UBITS + 8)))
 
 /* Called on each hit the tracer shades, when set (rt_work.on_hit):
  * object oi of scene s, met at distance t along r by a ray of weight w

@@ -2,12 +2,14 @@
 /*
  * rt_tracer: what a render derives from the scene before the first ray
  * (rt_trace.h): colour tables per material, the highlight cut-offs, the
- * colour bounds of the faint-ray cut-off, the sealed glass and the
- * direction grids; and the per-render work.
+ * colour bounds of the faint-ray cut-off, the side of each quad each
+ * light lies on, the sealed glass and the direction grids; and the
+ * per-render work.
  */
 #include "rt_libc.h"
 #include "rt_colour.h"
 #include "rt_cutoff.h"
+#include "rt_shape.h"
 #include "rt_specular.h"
 
 void rt_tracer_init(rt_tracer *tr, const rt_scene *s, const rt_options *o)
@@ -36,6 +38,24 @@ void rt_tracer_init(rt_tracer *tr, const rt_scene *s, const rt_options *o)
     }
     if (RT_CUTOFF)
         rt_cutoff_bounds(tr->bound, s);
+    for (unsigned li = 0; RT_HAS_QUAD && li < s->n_lights; li++) {
+        const fx_vec3 lp = s->light[li].pos;
+        for (unsigned i = 0; i < s->n_objects; i++) {
+            const rt_object *q = &s->obj[i];
+            /* A floor's own test rejects a ray off its side as soon. */
+            if (q->kind != RT_QUAD ||
+                (q->u.quad.flat && (q->u.quad.normal.y == FX_UONE ||
+                                    q->u.quad.normal.y == -FX_UONE)))
+                continue;
+            /* (corner - lp).normal: negative with the light in front. */
+            const int64_t num = rt_quad_side(q, lp, fx_v3_small(lp));
+            const uint32_t bit = (uint32_t)1 << (i % 32);
+            if (num < -RT_SIDE_MARGIN)
+                tr->quad_front[li][i / 32] |= bit;
+            if (num < -RT_SIDE_MARGIN || num > RT_SIDE_MARGIN)
+                tr->quad_sided[li][i / 32] |= bit;
+        }
+    }
     rt_sealed_find(&tr->sealed, s, (tr->feat & RT_FEAT_SHADOWS) != 0);
     rt_dir_grids_prepare(&tr->grids, s);
 }
