@@ -69,15 +69,17 @@ RT_NOINLINE static fx_dir3 bumped_normal(const rt_material *m,
     return n;
 }
 
-/* Which colour of material m the texture gives object o at p (the
- * outward normal ng_out): 0 m->color, 1 m->color2. The texture is read
- * just inside the surface: see render-model.md. */
+/* Which colour of material m the texture gives object o at p, the hit
+ * of r at t (the outward normal ng_out): 0 m->color, 1 m->color2. The
+ * texture is read just inside the surface: see render-model.md. */
 static inline unsigned texture(const rt_material *m, const rt_object *o,
-                               fx_vec3 p, fx_dir3 ng_out)
+                               const rt_ray *r, fx_t t, fx_vec3 p,
+                               fx_dir3 ng_out)
 {
     if (!RT_HAS_TEXTURES || m->texture == RT_TEX_NONE)
         return 0;
-    return rt_texel(m, o, rt_v3_madd_pow2(p, ng_out, RT_EPS_LOG2, 1));
+    return rt_texel(m, o, r, t, ng_out,
+                    rt_v3_madd_pow2(p, ng_out, RT_EPS_LOG2, 1));
 }
 
 /* Adds light li's Lambert term and Phong highlight at the hit of r on
@@ -167,7 +169,7 @@ static rt_rgb shade(const rt_tracer *tr, rt_work *wk, const rt_ray *r,
         np = &nb;
         dn = rt_dotu_of(fx_d3_dot_exact(r->d, nb));
     }
-    const unsigned tex = texture(m, o, p, ng_out);
+    const unsigned tex = texture(m, o, r, t, p, ng_out);
     const unsigned off = rt_origin_log2(o); /* rays leave 2^off off */
     const fx_vec3 p_out = offset_point(p, ng, off);
     const unsigned skip_out = (o->convex && outside) ? oi : RT_NO_OBJECT;

@@ -36,74 +36,189 @@ static inline int far_apart(fx_t p, fx_t a)
     return (int)(far_bit(p, a) >> 31);
 }
 
-/* Low word of the cell index of p - a along one axis for cells of size
- * m->tex_scale, floor((p - a) / size), for a difference that fits int32
- * (not far_apart): the texel needs only the parity of the sum, so a
- * 32-bit word of it will do. */
-static inline uint32_t cell(const rt_material *m, fx_t p, fx_t a)
+/* The hit a texel is read for: ray r at t on an object, its outward unit
+ * normal n_out. */
+typedef struct {
+    const rt_ray *r;
+    fx_t t;
+    fx_dir3 n_out;
+} tex_hit;
+
+/* How near a cell's edge, in Q16.16 ulps, the rounded point read must lie
+ * for cell_edge to decide the cell: the point is o + t d rounded, moved
+ * 2^-RT_EPS_LOG2 along the normal and rounded again, and t is rounded, so
+ * it lies within 2 ulps of the hit of the ray's rounded t and the
+ * rounded hit's exact one; twice that is the margin. */
+#define TEX_NEAR 4
+
+/* The exact hit is taken to 2^-(16 + TEX_FINE_BITS), about float32's
+ * step at 2 to 4 units: finer, the rounding of the ray's own direction
+ * (2^-FX_UBITS) would split a point the scene puts exactly on an edge,
+ * which the reference keeps on it. Rounded to nearest; a point that
+ * rounds onto the edge is in the cell above it. */
+#define TEX_FINE_BITS 6
+
+/* The hit's component i (x, y, z for 0, 1, 2). */
+static inline int32_t comp(fx_vec3 v, unsigned i)
 {
-    fx_t rem;
-    return (uint32_t)fx_floor_div((int32_t)((int64_t)p - a), m->tex_scale,
-                                  m->tex_rcp, &rem);
+    return i == 0 ? v.x : (i == 1 ? v.y : v.z);
 }
 
-/* The same at any distance from the origin a. */
-static inline uint32_t cell_any(const rt_material *m, fx_t p, fx_t a)
+static inline int32_t dcomp(fx_dir3 v, unsigned i)
+{
+    return i == 0 ? v.x : (i == 1 ? v.y : v.z);
+}
+
+/* The cell along axis i of the hit h on object o, read at pi (the
+ * rounded point's component) which lies rem from the start of cell k
+ * (rem < TEX_NEAR) or s - rem from its end: the side of that edge B of
+ * the exact hit, moved 2^-RT_EPS_LOG2 inside as the point is. A face in
+ * an axis plane (a floor quad's, a box's) holds the hit exactly: the ray
+ * meets plane x_j = P at x_i = o_i + d_i (P - o_j) / d_j, whose side of
+ * B is that of (o_i - B) d_j + d_i (P - o_j) over d_j, from two exact
+ * products; along j itself the point is P less the offset. Any other hit
+ * takes o + t d with every bit of t d (16 + FX_UBITS fraction bits). The
+ * point is then rounded to TEX_FINE_BITS more bits than Q16.16 and, on
+ * the edge, is in the cell above it, as the floor of the division puts
+ * an exact point. Out of these ranges, and where p is finer than o + t d
+ * already, the rounded point stands. */
+RT_NOINLINE static uint32_t cell_edge(const rt_material *m,
+                                      const tex_hit *h, const rt_object *o,
+                                      unsigned i, fx_t pi, uint32_t k,
+                                      fx_t rem)
+{
+    const rt_ray *r = h->r;
+    const fx_t s = m->tex_scale;
+    const int up = rem >= TEX_NEAR; /* near the cell's far edge */
+    const uint32_t above = up ? k + 1u : k; /* the cell from B up */
+    const int64_t pb = up ? (int64_t)rem - s : rem; /* pi - B */
+    const int64_t ob = (int64_t)comp(r->o, i) - pi + pb; /* o_i - B */
+    const int32_t di = dcomp(r->d, i), ni = dcomp(h->n_out, i);
+    int64_t w;
+    unsigned j = 3; /* the axis of the face's plane, if any */
+    fx_t plane = 0;
+    if (o->kind == RT_QUAD && o->u.quad.flat &&
+        (o->u.quad.normal.y == FX_UONE || o->u.quad.normal.y == -FX_UONE)) {
+        j = 1;
+        plane = o->u.quad.corner.y;
+    } else if (o->kind == RT_BOX) {
+        for (unsigned a = 0; a < 3; a++)
+            if (dcomp(h->n_out, a) != 0) {
+                j = a;
+                plane = dcomp(h->n_out, a) > 0 ? comp(o->u.box.max, a)
+                                                : comp(o->u.box.min, a);
+            }
+    }
+    /* A reflective or transparent upright's p is its hit refined
+     * already (rt_upright_normal), finer than o + t d. */
+    if (ob < INT32_MIN || ob > INT32_MAX ||
+        ((o->kind == RT_CYLINDER || o->kind == RT_CONE) &&
+         (m->reflect > 0 || m->transparency > 0)))
+        return k;
+    if (j == i) {
+        const int64_t q = (int64_t)plane - pi + pb; /* P - B */
+        if (q < INT32_MIN || q > INT32_MAX)
+            return k;
+        w = q * FX_UONE - (int64_t)ni * ((int64_t)1 << RT_EPS_LOG2);
+    } else if (j < 3 && dcomp(r->d, j) != 0) {
+        const int32_t dj = dcomp(r->d, j);
+        const int64_t pm = (int64_t)plane - comp(r->o, j); /* P - o_j */
+        if (pm < INT32_MIN || pm > INT32_MAX)
+            return k;
+        const int64_t e = fx_imul64((int32_t)ob, dj) +
+                          fx_imul64(di, (int32_t)pm); /* (x_i - B) d_j */
+        const uint32_t adj = (uint32_t)(dj < 0 ? -dj : dj);
+        return (dj < 0 ? -e : e) >= -(int64_t)(adj >> (TEX_FINE_BITS + 1))
+                   ? above
+                   : above - 1u;
+    } else {
+        w = ob * FX_UONE + fx_imul64(h->t, di) -
+            (int64_t)ni * ((int64_t)1 << RT_EPS_LOG2);
+    }
+    /* w is x_i - B with 16 + FX_UBITS fraction bits. */
+    return w >= -((int64_t)1 << (FX_UBITS - TEX_FINE_BITS - 1)) ? above
+                                                                : above - 1u;
+}
+
+/* Low word of the cell index of p - a along axis i for cells of size
+ * m->tex_scale, floor((p - a) / size), for a difference that fits int32
+ * (not far_apart): the texel needs only the parity of the sum, so a
+ * 32-bit word of it will do. Within TEX_NEAR of an edge, the hit h
+ * decides (cell_edge). */
+static inline uint32_t cell(const rt_material *m, const tex_hit *h,
+                            const rt_object *o, unsigned i, fx_t p, fx_t a)
+{
+    fx_t rem;
+    const fx_t s = m->tex_scale;
+    const uint32_t k = (uint32_t)fx_floor_div((int32_t)((int64_t)p - a), s,
+                                              m->tex_rcp, &rem);
+    /* rem < TEX_NEAR or rem >= s - TEX_NEAR, for s > 2 TEX_NEAR. */
+    if ((uint32_t)(rem - TEX_NEAR) >= (uint32_t)(s - 2 * TEX_NEAR))
+        return cell_edge(m, h, o, i, p, k, rem);
+    return k;
+}
+
+/* The same at any distance from the origin a; far from it, the rounded
+ * point decides. */
+static inline uint32_t cell_any(const rt_material *m, const tex_hit *h,
+                                const rt_object *o, unsigned i, fx_t p,
+                                fx_t a)
 {
     if (far_apart(p, a))
         return (uint32_t)floor_div_far(p, a, m->tex_scale);
-    return cell(m, p, a);
+    return cell(m, h, o, i, p, a);
 }
 
 /* rt_texel where some difference overflows int32 (points over 32,768
  * units from the object's origin). */
-static unsigned texel_far(const rt_material *m, const rt_object *o,
-                                  const fx_vec3 *p)
+static unsigned texel_far(const rt_material *m, const tex_hit *h,
+                          const rt_object *o, const fx_vec3 *p)
 {
-    uint32_t idx = cell_any(m, p->x, o->u.origin.x) +
-                   cell_any(m, p->z, o->u.origin.z);
+    uint32_t idx = cell_any(m, h, o, 0, p->x, o->u.origin.x) +
+                   cell_any(m, h, o, 2, p->z, o->u.origin.z);
     if (m->texture == RT_TEX_STRIPES)
-        idx = m->axis == 0 ? cell_any(m, p->x, o->u.origin.x)
-                           : (m->axis == 1 ? cell_any(m, p->y, o->u.origin.y)
-                                           : cell_any(m, p->z, o->u.origin.z));
+        idx = cell_any(m, h, o, m->axis, comp(*p, m->axis),
+                       comp(o->u.origin, m->axis));
     else if (m->texture == RT_TEX_CHECKER3D)
-        idx += cell_any(m, p->y, o->u.origin.y);
+        idx += cell_any(m, h, o, 1, p->y, o->u.origin.y);
     return idx & 1u;
 }
 
 /* Textures follow the object, not the world origin: cells count from the
- * object's first point, rt_object.u.origin. The unsigned sums wrap by
- * definition and keep the parity. */
-unsigned rt_texel(const rt_material *m, const rt_object *o, fx_vec3 p)
+ * object's first point o->u.origin. The unsigned sums wrap by definition and
+ * keep the parity. */
+unsigned rt_texel(const rt_material *m, const rt_object *o, const rt_ray *r,
+                  fx_t t, fx_dir3 n_out, fx_vec3 p)
 {
+    const tex_hit h = { r, t, n_out };
     uint32_t idx;
     switch (m->texture) {
     case RT_TEX_STRIPES:
         if (m->axis == 0) {
             if (far_apart(p.x, o->u.origin.x))
-                return texel_far(m, o, &p);
-            idx = cell(m, p.x, o->u.origin.x);
+                return texel_far(m, &h, o, &p);
+            idx = cell(m, &h, o, 0, p.x, o->u.origin.x);
         } else if (m->axis == 1) {
             if (far_apart(p.y, o->u.origin.y))
-                return texel_far(m, o, &p);
-            idx = cell(m, p.y, o->u.origin.y);
+                return texel_far(m, &h, o, &p);
+            idx = cell(m, &h, o, 1, p.y, o->u.origin.y);
         } else {
             if (far_apart(p.z, o->u.origin.z))
-                return texel_far(m, o, &p);
-            idx = cell(m, p.z, o->u.origin.z);
+                return texel_far(m, &h, o, &p);
+            idx = cell(m, &h, o, 2, p.z, o->u.origin.z);
         }
         break;
     case RT_TEX_CHECKER:
         if ((far_bit(p.x, o->u.origin.x) | far_bit(p.z, o->u.origin.z)) >> 31)
-            return texel_far(m, o, &p);
-        idx = cell(m, p.x, o->u.origin.x) + cell(m, p.z, o->u.origin.z);
+            return texel_far(m, &h, o, &p);
+        idx = cell(m, &h, o, 0, p.x, o->u.origin.x) + cell(m, &h, o, 2, p.z, o->u.origin.z);
         break;
     case RT_TEX_CHECKER3D:
         if ((far_bit(p.x, o->u.origin.x) | far_bit(p.y, o->u.origin.y) |
              far_bit(p.z, o->u.origin.z)) >> 31)
-            return texel_far(m, o, &p);
-        idx = cell(m, p.x, o->u.origin.x) + cell(m, p.y, o->u.origin.y) +
-              cell(m, p.z, o->u.origin.z);
+            return texel_far(m, &h, o, &p);
+        idx = cell(m, &h, o, 0, p.x, o->u.origin.x) + cell(m, &h, o, 1, p.y, o->u.origin.y) +
+              cell(m, &h, o, 2, p.z, o->u.origin.z);
         break;
     default:
         return 0;

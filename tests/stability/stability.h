@@ -201,6 +201,7 @@ double rnd(void);
     X(scenes_no_speckles) \
     X(seed_no_acne_320) \
     X(texture_cells_1ulp) \
+    X(texture_edge_subulp) \
     X(bump_lattice_1ulp) \
     X(bump_normal_precision) \
     X(texture_size_below_1ulp) \

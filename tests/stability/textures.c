@@ -81,6 +81,64 @@ void case_texture_cells_1ulp(void)
     }
 }
 
+/* A floor seen at a slant, its hit m/3 ulps from a checker edge at x =
+ * 0.5: the eye's x and the look point's are Q16.16 and the look point
+ * lies 2 units below the floor as the eye is 1 above it, so the hit, x =
+ * 0.5 + m/3 ulps, lies between Q16.16 points (for m = 0 on the edge,
+ * which is in the cell above it). Rounded to Q16.16 the hit of m = -1
+ * lands on the edge and took the cell above it; the core decides an
+ * edge within a few ulps from the exact hit, and must pick the
+ * reference's cell for every m, on a quad floor and on a box's top face.
+ * Returns 0 with both pixels, or -1. */
+static int edge_pixel(int m, int box, uint8_t fx[3], uint8_t ref[3])
+{
+    char text[1024];
+    snprintf(text, sizeof text,
+             "image 1 1\n"
+             "camera eye -0.5 1 0.6 look %.10f -2 0.6 up 0 0 1 fov 1\n"
+             BG_BLUE "ambient 1 1 1\nlight 0 5 3\n"
+             "material m color 1 1 1 ambient 1 diffuse 0 specular 0 "
+             "checker 0 0 0 0.25\n%s",
+             2.5 + m / 65536.0,
+             box ? "box min -9.5 -1 -10 max 10 0 10 material m\n"
+                 : "quad corner 0.25 0 -10 edge1 0 0 20 edge2 20 0 0 "
+                   "material m\n");
+    if (!parse(text, &scene_a))
+        return -1;
+    ppm_image a, b;
+    view vw = { 1, 1, 1, -1, 0 };
+    if (!CHECK(render(&scene_a, vw, 0, &a, NULL) == RT_OK))
+        return -1;
+    if (!CHECK(render(&scene_a, vw, 1, &b, NULL) == RT_OK)) {
+        ppm_free(&a);
+        return -1;
+    }
+    memcpy(fx, a.data, 3);
+    memcpy(ref, b.data, 3);
+    ppm_free(&a);
+    ppm_free(&b);
+    return 0;
+}
+
+void case_texture_edge_subulp(void)
+{
+    for (int box = 0; box <= 1; box++) {
+        int wrong = 0, seen[2] = { 0, 0 };
+        for (int m = -2; m <= 2; m++) {
+            uint8_t a[3], b[3];
+            if (edge_pixel(m, box, a, b) != 0)
+                return;
+            wrong += pdiff(a, b) != 0;
+            seen[a[0] != 0] = 1;
+        }
+        if (!CHECK(wrong == 0 && seen[0] && seen[1]))
+            printf("    %s: %d of 5 hits in another cell than the "
+                   "reference's; black %s, white %s\n",
+                   box ? "box" : "quad", wrong, seen[0] ? "seen" : "not seen",
+                   seen[1] ? "seen" : "not seen");
+    }
+}
+
 /* Bump lattices of 1, 2 and 3 ulps: stepped one ulp at a time as above,
  * each pixel (Lambert only, so it follows the perturbed normal) is within
  * 2 levels of the reference's, and the 12 pixels are not all alike (the
