@@ -8,11 +8,10 @@
 #
 #   bench/fxbench/run.sh [CORE_DIR]     (default: core)
 #
-# CORE_DIR measures another version of the three math sources, e.g. the
-# committed one:
-#   mkdir -p /tmp/base && for f in fx_math.h fx_math.c fx_sqrt.c fx_vec.h \
-#     fx_vec.c; do git show HEAD:core/$f > /tmp/base/$f; done
-#   bench/fxbench/run.sh /tmp/base
+# CORE_DIR measures another version of the core, laid out as core/ is (a
+# folder a layer), e.g. the committed one:
+#   mkdir -p /tmp/base && git archive HEAD core | tar -x -C /tmp/base
+#   bench/fxbench/run.sh /tmp/base/core
 # Output goes to build/fxbench/<basename of CORE_DIR>/.
 set -eu
 cd "$(dirname "$0")/../.."
@@ -23,16 +22,17 @@ CC=${CC:-arm-none-eabi-gcc}
 CFLAGS="-std=gnu99 -O2 -ffreestanding -nostdlib -mgeneral-regs-only
         -Wall -Wextra -Werror -fno-tree-loop-distribute-patterns
         -ffunction-sections -fdata-sections"
+# The arithmetic, the scene's prepare and the shapes' tests; the four
+# small shapes' files are compiled inside their dispatch, rt_shape.c.
+INC=$(for d in "$CORE"/*/; do printf -- '-I%s ' "${d%/}"; done)
+SRC="$(ls "$CORE"/fx/*.c) $CORE/scene/rt_scene.c $(ls "$CORE"/shapes/*.c |
+    grep -vE '/rt_(sphere|quad|box|upright)\.c$')"
 for cpu in cortex-m3 cortex-m0; do
     elf=$OUT/fxbench-$cpu.elf
-    $CC -mcpu=$cpu -mthumb $CFLAGS -I"$CORE" -Tbench/fxbench/link.ld \
+    # shellcheck disable=SC2086
+    $CC -mcpu=$cpu -mthumb $CFLAGS $INC -Tbench/fxbench/link.ld \
         -Wl,--gc-sections -Wl,-Map="$elf.map" \
-        bench/fxbench/startup.c bench/fxbench/bench.c \
-        "$CORE"/fx_math.c "$CORE"/fx_sqrt.c "$CORE"/fx_vec.c \
-        "$CORE"/fx_dir.c "$CORE"/fx_rsqrt.c \
-        "$CORE"/rt_intersect.c "$CORE"/rt_scene.c "$CORE"/rt_mesh.c \
-        "$CORE"/rt_mesh_check.c "$CORE"/rt_normal.c "$CORE"/rt_mesh_normal.c \
-        -lgcc -o "$elf"
+        bench/fxbench/startup.c bench/fxbench/bench.c $SRC -lgcc -o "$elf"
     echo "== $cpu ($CORE)"
     # QEMU prints semihosting SYS_WRITE0 text on stderr.
     qemu-system-arm -M mps2-an385 -display none -monitor none -serial none \
