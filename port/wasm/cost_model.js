@@ -17,19 +17,19 @@ const COST_MODEL = {
  ],
  "m3": [
   0.0,
-  69.4605,
-  927.3329,
-  289.8905,
-  2065.3157,
-  55.2036
+  9.0217,
+  930.5091,
+  152.6028,
+  1985.4459,
+  105.5408
  ],
  "m0": [
   0.0,
-  22.7744,
-  2891.9408,
-  673.6391,
-  4974.3816,
-  138.4137
+  0.0,
+  2729.1633,
+  501.3248,
+  4636.4001,
+  267.8031
  ],
  "fit": [
   "160x120 1 spp",
@@ -40,8 +40,8 @@ const COST_MODEL = {
   "meshes"
  ],
  "fit_max_error_pct": {
-  "m3": 26.6,
-  "m0": 26.1
+  "m3": 25.6,
+  "m0": 25.6
  },
  "bench_size": "320x240 1 spp",
  "bench": [
@@ -56,14 +56,14 @@ const COST_MODEL = {
     "intersection_tests": 66129
    },
    "m3": {
-    "estimate": 667.7,
-    "measured": 530.2,
-    "error_pct": 25.9
+    "estimate": 652.5,
+    "measured": 518.6,
+    "error_pct": 25.8
    },
    "m0": {
-    "estimate": 1859.3,
-    "measured": 1459.4,
-    "error_pct": 27.4
+    "estimate": 1851.2,
+    "measured": 1439.9,
+    "error_pct": 28.6
    }
   },
   {
@@ -74,17 +74,17 @@ const COST_MODEL = {
     "shadow_rays": 216092,
     "reflection_rays": 55269,
     "refraction_rays": 59013,
-    "intersection_tests": 873882
+    "intersection_tests": 573963
    },
    "m3": {
-    "estimate": 5102.4,
-    "measured": 4721.4,
-    "error_pct": 8.1
+    "estimate": 5051.4,
+    "measured": 4414.7,
+    "error_pct": 14.4
    },
    "m0": {
-    "estimate": 14041.9,
-    "measured": 13211.3,
-    "error_pct": 6.3
+    "estimate": 13603.8,
+    "measured": 12100.2,
+    "error_pct": 12.4
    }
   },
   {
@@ -95,17 +95,17 @@ const COST_MODEL = {
     "shadow_rays": 104617,
     "reflection_rays": 11560,
     "refraction_rays": 6823,
-    "intersection_tests": 2646093
+    "intersection_tests": 1463729
    },
    "m3": {
-    "estimate": 3461.8,
-    "measured": 3303.6,
-    "error_pct": 4.8
+    "estimate": 3487.4,
+    "measured": 2797.3,
+    "error_pct": 24.7
    },
    "m0": {
-    "estimate": 9274.5,
-    "measured": 8832.3,
-    "error_pct": 5.0
+    "estimate": 9309.1,
+    "measured": 7413.4,
+    "error_pct": 25.6
    }
   },
   {
@@ -119,14 +119,14 @@ const COST_MODEL = {
     "intersection_tests": 123879
    },
    "m3": {
-    "estimate": 772.8,
-    "measured": 3231.4,
-    "error_pct": -76.1
+    "estimate": 788.9,
+    "measured": 3242.0,
+    "error_pct": -75.7
    },
    "m0": {
-    "estimate": 2150.5,
-    "measured": 9491.9,
-    "error_pct": -77.3
+    "estimate": 2222.6,
+    "measured": 9489.8,
+    "error_pct": -76.6
    }
   },
   {
@@ -137,17 +137,17 @@ const COST_MODEL = {
     "shadow_rays": 223236,
     "reflection_rays": 70847,
     "refraction_rays": 0,
-    "intersection_tests": 857288
+    "intersection_tests": 549068
    },
    "m3": {
-    "estimate": 3648.6,
-    "measured": 3434.9,
-    "error_pct": 6.2
+    "estimate": 3609.1,
+    "measured": 3152.3,
+    "error_pct": 14.5
    },
    "m0": {
-    "estimate": 10595.3,
-    "measured": 9996.0,
-    "error_pct": 6.0
+    "estimate": 10310.0,
+    "measured": 8969.6,
+    "error_pct": 14.9
    }
   },
   {
@@ -158,17 +158,17 @@ const COST_MODEL = {
     "shadow_rays": 69352,
     "reflection_rays": 0,
     "refraction_rays": 0,
-    "intersection_tests": 145559
+    "intersection_tests": 139344
    },
    "m3": {
-    "estimate": 1011.5,
-    "measured": 975.1,
-    "error_pct": 3.7
+    "estimate": 1040.8,
+    "measured": 980.6,
+    "error_pct": 6.1
    },
    "m0": {
-    "estimate": 2896.6,
-    "measured": 2740.1,
-    "error_pct": 5.7
+    "estimate": 2950.4,
+    "measured": 2756.8,
+    "error_pct": 7.0
    }
   },
   {
@@ -179,17 +179,17 @@ const COST_MODEL = {
     "shadow_rays": 70761,
     "reflection_rays": 84531,
     "refraction_rays": 34597,
-    "intersection_tests": 585125
+    "intersection_tests": 504246
    },
    "m3": {
-    "estimate": 2593.9,
-    "measured": 2555.7,
-    "error_pct": 1.5
+    "estimate": 2621.7,
+    "measured": 2514.2,
+    "error_pct": 4.3
    },
    "m0": {
-    "estimate": 6724.2,
-    "measured": 6759.3,
-    "error_pct": -0.5
+    "estimate": 6913.3,
+    "measured": 6465.4,
+    "error_pct": 6.9
    }
   },
   {
@@ -203,14 +203,14 @@ const COST_MODEL = {
     "intersection_tests": 101177
    },
    "m3": {
-    "estimate": 739.1,
-    "measured": 890.4,
-    "error_pct": -17.0
+    "estimate": 747.0,
+    "measured": 908.9,
+    "error_pct": -17.8
    },
    "m0": {
-    "estimate": 2066.6,
-    "measured": 2395.8,
-    "error_pct": -13.7
+    "estimate": 2109.5,
+    "measured": 2396.5,
+    "error_pct": -12.0
    }
   }
  ]
