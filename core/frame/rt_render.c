@@ -148,6 +148,17 @@ static rt_status render_band(const rt_tracer *tr, rt_work *wk,
     return RT_OK;
 }
 
+/* What a render of any rows needs first: the tracer, the work and the
+ * camera's frame. */
+static void frame_setup(rt_tracer *tr, rt_work *wk, rt_cam_frame *cf,
+                        const rt_scene *s, const rt_options *o,
+                        rt_stats *stats)
+{
+    rt_tracer_init(tr, s, o);
+    rt_work_init(wk, stats);
+    rt_cam_setup(cf, s, o->width, o->height, grid_side(o->spp));
+}
+
 rt_status rt_render_window(const rt_scene *s, const rt_options *o, int x0,
                            int y0, int x1, int y1, uint8_t *row_buf,
                            rt_row_fn fn, void *ctx, rt_stats *stats)
@@ -159,11 +170,9 @@ rt_status rt_render_window(const rt_scene *s, const rt_options *o, int x0,
         return RT_ERR_ARG;
 
     rt_tracer tr;
-    rt_tracer_init(&tr, s, o);
     rt_work wk;
-    rt_work_init(&wk, stats);
     rt_cam_frame cf;
-    rt_cam_setup(&cf, s, o->width, o->height, grid_side(o->spp));
+    frame_setup(&tr, &wk, &cf, s, o, stats);
     return render_band(&tr, &wk, &cf, o, (unsigned)x0, y0, (unsigned)x1, y1,
                        row_buf, fn, ctx);
 }
@@ -179,11 +188,9 @@ rt_status rt_render_row_set(const rt_scene *s, const rt_options *o,
         return RT_ERR_ARG;
 
     rt_tracer tr;
-    rt_tracer_init(&tr, s, o);
     rt_work wk;
-    rt_work_init(&wk, stats);
     rt_cam_frame cf;
-    rt_cam_setup(&cf, s, o->width, o->height, grid_side(o->spp));
+    frame_setup(&tr, &wk, &cf, s, o, stats);
     for (int y = next(ctx); y >= 0; y = next(ctx)) {
         if (y >= (int)o->height)
             return RT_ERR_ARG;
